@@ -1,0 +1,30 @@
+// eulermap::Mesh — the core's triangle mesh, a vcglib TriMesh in double precision.
+//
+// The MeshLab adapter copies layers into and out of this type
+// (vcg::tri::Append works across mesh types), so the core never sees CMeshO.
+// Components: positions, normals, flags, quality (per-vertex distortion), colour,
+// per-vertex and per-wedge texture coordinates (targets may carry either),
+// FF/VF adjacency for topology and cleaning, and Mark for spatial queries.
+#pragma once
+
+#include <vcg/complex/complex.h>
+
+namespace eulermap {
+
+class Vertex;
+class Face;
+struct UsedTypes : public vcg::UsedTypes<vcg::Use<Vertex>::AsVertexType, vcg::Use<Face>::AsFaceType> {};
+
+class Vertex : public vcg::Vertex<UsedTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d,
+                                  vcg::vertex::BitFlags, vcg::vertex::Qualityd, vcg::vertex::Color4b,
+                                  vcg::vertex::TexCoord2d, vcg::vertex::VFAdj, vcg::vertex::Mark> {};
+
+class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::BitFlags,
+                              vcg::face::WedgeTexCoord2d, vcg::face::FFAdj, vcg::face::VFAdj, vcg::face::Mark> {};
+
+class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
+
+using Point3 = vcg::Point3d;
+using Box3 = vcg::Box3d;
+
+} // namespace eulermap

@@ -1,0 +1,47 @@
+// eulermap::Morph — the anchor-guided morph f(p,t) of Eq. 1 (DESIGN.md: morph.h):
+//
+//   f(p,t) = (1-t) f0(W_t->0(p)) + t f1(W_t->1(p))
+//
+// Anchors a_i on the source and b_i on the (placed) target.
+//   - fewer than 4 anchors, or coplanar ones: W = identity (a plain linear blend; the
+//     similarity fitted to 1-3 anchors is the placement, placement.h);
+//   - 4 or more non-coplanar anchors: q_i(t) by as-rigid-as-possible interpolation of
+//     the tetrahedra of every 4-subset of anchors (Alexa et al. 2000: per tetrahedron,
+//     A = R S by polar decomposition, A(t) = R(t) ((1-t) I + t S) with R(t) the slerp of R;
+//     q(t) the least-squares fit of all A(t), centroid interpolated linearly), and
+//     thin-plate (phi(r) = r, plus affine part) warps W_t->0, W_t->1 with
+//     W_t->0(q_i(t)) = a_i and W_t->1(q_i(t)) = b_i.
+#pragma once
+
+#include "field.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace eulermap {
+
+class Morph {
+ public:
+  enum class Mode { LinearBlend, ArapTps };
+
+  // f0, f1 on the same grid; anchors as matched lists (a[i] <-> b[i]), b already placed.
+  Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b);
+  ~Morph();
+
+  Mode mode() const;
+  std::string Describe() const;  // e.g. "ARAP+TPS, 6 anchors (15 tetrahedra)"
+
+  // f(., t) at every grid node (Eq. 1), into `out` (resized to the grid).
+  void Frame(double t, ScalarField &out) const;
+
+  std::vector<Point3> Anchors(double t) const;        // q_i(t); q_i(0) = a_i, q_i(1) = b_i
+  Point3 WarpToSource(double t, const Point3 &p) const;  // W_t->0
+  Point3 WarpToTarget(double t, const Point3 &p) const;  // W_t->1
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace eulermap

@@ -1,0 +1,64 @@
+// eulermap::ComputeMap — the whole pipeline of DESIGN.md, from two meshes to the map.
+//
+//   in:  source M0, target M1 (left untouched), anchor pairs (points on each mesh),
+//        Options, and a progress callback
+//   out: Result: `cut` (the source minus the discs removed by surgery, original
+//        positions, per-vertex attribute "TargetPosition" = F(p) on the real target,
+//        per-vertex quality = distortion, wedge texture coordinates pulled from the
+//        target when it has them), `mapped` (same connectivity and vertex order,
+//        positions F(p)), `filled` (only with Options::fillHoles), and the Report.
+// Throws eulermap::Error with a message for the user on bad input or cancellation.
+#pragma once
+
+#include "mesh.h"
+#include "placement.h"
+#include "report.h"
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eulermap {
+
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct AnchorPair {
+  Point3 source;  // a_i, on M0
+  Point3 target;  // b_i, on M1 (its own frame)
+  std::string name;
+};
+
+enum class Solver { ConjugateGradient, GaussSeidel };
+
+struct Options {
+  int gridResolution = 64;   // cells on the longest axis of the common box
+  int steps = 40;            // time steps from t = 0 to 1
+  double alpha = 2;          // smoothness weight of Eq. 2
+  double holeRadius = 1;     // sphere radius around a saddle, in grid cells
+  Align align = Align::CentreAndScale;  // placement when there are no anchors
+  Solver solver = Solver::ConjugateGradient;
+  double tolerance = 1e-4;   // relative residual that ends a velocity solve
+  int maxIterations = 500;   // per step
+  bool fillHoles = false;
+  bool transferTexture = true;
+  int threads = 0;           // 0: all cores
+  std::size_t maxGridNodes = 8u << 20;  // larger grids are refused (memory)
+};
+
+struct Result {
+  Mesh cut;
+  Mesh mapped;
+  Mesh filled;
+  Report report;
+};
+
+// Called with a share in [0,1] and the stage's name; return false to cancel.
+using Progress = std::function<bool(double, const std::string &)>;
+
+void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &anchors, const Options &options,
+                Result &result, const Progress &progress = {});
+
+} // namespace eulermap

@@ -1,0 +1,42 @@
+// eulermap::Similarity and the placement of the target in the source's frame.
+//
+// The morph runs between the source M0 and the placed target P(M1); images found on
+// P(M1) are mapped back onto the real target by P^-1 (DESIGN.md: align option).
+//   - align = none, no anchors:           P = identity
+//   - align = centre-and-scale, no anchors: P moves the target's centroid onto the
+//     source's and scales its bounding-box diagonal to the source's
+//   - 1 to 3 anchors, or more:           P = the least-squares similarity taking the
+//     target anchors b_i onto the source anchors a_i (1 anchor: translation only;
+//     2 anchors: translation and scale; 3 or more: Umeyama's rotation too)
+#pragma once
+
+#include "mesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace eulermap {
+
+struct Similarity {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  double scale = 1;
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+
+  Point3 Apply(const Point3 &p) const;  // scale * rotation * p + translation
+  Similarity Inverse() const;
+};
+
+enum class Align { None, CentreAndScale };
+
+// Centroid of the surface (area-weighted).
+Point3 SurfaceCentroid(const Mesh &mesh);
+
+// The placement P described above. `from` are target-side anchor points (b_i),
+// `to` the source-side ones (a_i); with no anchors `align` decides.
+Similarity FitPlacement(const Mesh &source, const Mesh &target, const std::vector<Point3> &from,
+                        const std::vector<Point3> &to, Align align);
+
+// Applies s to every vertex of m (positions and normals).
+void Transform(Mesh &m, const Similarity &s);
+
+} // namespace eulermap

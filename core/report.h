@@ -1,0 +1,79 @@
+// eulermap::Report — every number users read (timings, solver figures, saddles, holes,
+// map quality) in one type, printed the same way by the MeshLab log, the tests and
+// the benchmark (DESIGN.md: style).
+#pragma once
+
+#include "mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace eulermap {
+
+// Per-stage wall-clock seconds, named as the paper's Table 1.
+struct StageTimes {
+  double sdf = 0;     // SDF: f0, f1 on the grid
+  double interp = 0;  // INT: morph frames f(., t_k), anchor interpolation, warps
+  double velocity = 0;  // VF: velocity fields V_k
+  double deform = 0;  // DEF: advection and pull-back of the tracked points, saddles, surgery
+  double quality = 0;   // measuring the map (not in the paper's table)
+  double Total() const { return sdf + interp + velocity + deform; }
+};
+
+struct SolverFigures {
+  long totalIterations = 0;
+  int maxIterations = 0;       // largest count in one step
+  double maxFinalResidual = 0; // largest relative residual at the end of a step
+};
+
+// Quality of the map F: M0 -> M1 (thresholds in DESIGN.md / the tests).
+struct MapQuality {
+  double onSurfaceRate = 0;     // share of tracked images within 0.5% of the target's diagonal
+                                // from the target, before the final projection onto it
+  double coverage = 0;          // share of uniform target samples within 2% of the diagonal
+                                // from the mapped surface
+  double flippedAreaShare = 0;  // area share of mapped faces facing against the target
+  double longestEdgeCells = 0;  // longest mapped edge, in grid cells
+  double anchorErrorCells = 0;  // largest |F(a_i) - b_i|, in grid cells (0 without anchors)
+  double meanDistortion = 0;    // mean per-vertex distortion (vertex quality of the cut layer)
+};
+
+struct SaddleEvent {
+  int step = 0;
+  Point3 position;          // world coordinates (the placed target's frame)
+  int expandingDirections = 0;  // 1 or 2 positive real parts of the Jacobian's eigenvalues
+  bool cut = false;         // its sphere met the tracked surface
+};
+
+struct HoleEvent {
+  int saddle = 0;        // index into Report::saddles
+  int facesRemoved = 0;
+  double rimLength = 0;  // length of the boundary left, world units
+};
+
+struct Report {
+  vcg::Point3i gridNodes;
+  double cellSize = 0;
+  int steps = 0;
+  double alpha = 0;
+  int anchors = 0;
+  std::string morphMode;    // Morph::Describe()
+  std::string placement;    // how the target was placed in the source's frame
+  std::string solver;       // "PCG" / "Gauss-Seidel"
+  int threads = 1;
+  int sourceVertices = 0;
+  SolverFigures solverFigures;
+  StageTimes times;
+  MapQuality quality;
+  std::vector<SaddleEvent> saddles;
+  std::vector<HoleEvent> holes;
+  int cutBoundaryLoops = 0;
+  int cutEulerCharacteristic = 0;
+  int cutComponents = 0;
+  long peakMemoryKiB = 0;   // peak resident set size of the process, if known
+
+  // Multi-line text for the log, the tests and the benchmark.
+  std::string ToText() const;
+};
+
+} // namespace eulermap

@@ -1,0 +1,33 @@
+// Signed distance fields f0, f1 on grid nodes (DESIGN.md: sdf.h).
+//
+// SignedDistance(mesh, grid)
+//   in:  a triangle mesh (closed, or with small holes) and the grid
+//   out: per node, the distance to the nearest surface point (vcglib closest-point
+//        search), negative inside. Inside means generalized winding number >= 1/2,
+//        so a mesh with a hole (camelhead.off) still has a sensible inside.
+// WindingNumber: the generalized winding number of Jacobson et al. 2013, evaluated
+//   hierarchically (far triangle clusters as dipoles, Barill et al. 2018).
+#pragma once
+
+#include "field.h"
+#include "mesh.h"
+
+#include <memory>
+
+namespace eulermap {
+
+class WindingNumber {
+ public:
+  explicit WindingNumber(const Mesh &mesh);
+  ~WindingNumber();
+  // Winding number at p: about 1 inside a closed outward-oriented mesh, 0 outside.
+  double operator()(const Point3 &p) const;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+};
+
+ScalarField SignedDistance(Mesh &mesh, const Grid &grid);
+
+} // namespace eulermap

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Fetches Debian's `meshlab` source package (MeshLab's src/common and vcglib headers)
+# with apt's own client and a private deb-src list, leaving the machine's apt set-up as
+# it is. Usage: setup/fetch-meshlab-source.sh VERSION_PREFIX DEST_DIR
+#   VERSION_PREFIX  e.g. 2020.09+dfsg1 (bookworm) or 2025.07~dfsg (sid)
+#   DEST_DIR        where the unpacked tree ends up (DEST_DIR/meshlab-<upstream version>)
+# Prints the unpacked tree's path on its last line. Safe to run twice.
+set -euo pipefail
+want="$1"; dest="$2"
+root="$(cd "$(dirname "$0")/.." && pwd)"
+state="$dest/apt-state"
+mkdir -p "$state/lists/partial" "$state/cache/archives/partial"
+find_tree() { find "$dest" -maxdepth 1 -type d -name "meshlab-${want%%-*}*" | head -n 1; }
+unpacked="$(find_tree)"
+if [ -n "$unpacked" ] && [ -f "$unpacked/.eulermap-complete" ]; then
+  echo "$unpacked"; exit 0
+fi
+apt_opts=(-o "Dir::Etc::sourcelist=$root/setup/debian-sources.list" -o Dir::Etc::sourceparts=-
+          -o "Dir::State::Lists=$state/lists" -o "Dir::Cache=$state/cache")
+apt-get "${apt_opts[@]}" -q update >&2
+found="$(apt-cache "${apt_opts[@]}" showsrc meshlab | sed -n 's/^Version: //p' | sort -u)"
+version="$(printf '%s\n' "$found" | grep -F -- "$want" | sort -V | tail -n 1 || true)"
+if [ -z "$version" ]; then
+  echo "error: Debian source package meshlab $want* not found; versions offered: $(echo $found)" >&2
+  exit 1
+fi
+cd "$dest"
+apt-get "${apt_opts[@]}" -q source "meshlab=$version" >&2
+unpacked="$(find_tree)"
+[ -n "$unpacked" ] || { echo "error: apt-get source left no meshlab-$want* tree in $dest" >&2; exit 1; }
+touch "$unpacked/.eulermap-complete"
+echo "$unpacked"

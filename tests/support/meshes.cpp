@@ -1,0 +1,86 @@
+#include "meshes.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/create/platonic.h>
+#include <vcg/complex/algorithms/refine.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <wrap/io_trimesh/import.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace eulermap::testing {
+
+namespace {
+void Finish(Mesh &m) {
+  vcg::tri::UpdateBounding<Mesh>::Box(m);
+  vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(m);
+}
+} // namespace
+
+std::string DataMesh(const std::string &name) { return std::string(EULERMAP_SOURCE_DIR) + "/../shared/data/meshes/" + name; }
+std::string SampleFile(const std::string &name) { return std::string(EULERMAP_SOURCE_DIR) + "/samples/" + name; }
+
+void LoadMesh(const std::string &path, Mesh &m) {
+  int mask = 0;
+  const int err = vcg::tri::io::Importer<Mesh>::Open(m, path.c_str(), mask);
+  if (err != 0 && vcg::tri::io::Importer<Mesh>::ErrorCritical(err))
+    throw std::runtime_error("cannot load " + path + ": " + vcg::tri::io::Importer<Mesh>::ErrorMsg(err));
+  vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(m);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+  Finish(m);
+}
+
+void MakeSphere(Mesh &m, const Point3 &centre, double radius, int subdivisions) {
+  MakeEllipsoid(m, centre, Point3(radius, radius, radius), subdivisions);
+}
+
+void MakeEllipsoid(Mesh &m, const Point3 &centre, const Point3 &radii, int subdivisions) {
+  m.Clear();
+  vcg::tri::Sphere(m, subdivisions);
+  for (auto &v : m.vert) {
+    const Point3 d = v.P().Normalize();
+    v.P() = centre + Point3(d.X() * radii.X(), d.Y() * radii.Y(), d.Z() * radii.Z());
+  }
+  Finish(m);
+}
+
+void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide) {  // faces split in halves until fine enough
+  m.Clear();
+  if (cellsPerSide <= 1) {
+    vcg::tri::Box(m, box);
+  } else {
+    vcg::tri::Box(m, box);
+    for (int s = 1; s < cellsPerSide; s *= 2) {
+      vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
+      vcg::tri::Refine<Mesh, vcg::tri::MidPoint<Mesh>>(m, vcg::tri::MidPoint<Mesh>(&m), 0);
+    }
+  }
+  vcg::tri::Clean<Mesh>::RemoveDuplicateVertex(m);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+  Finish(m);
+}
+
+void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv, int tubeDiv) {
+  m.Clear();
+  vcg::tri::Allocator<Mesh>::AddVertices(m, ringDiv * tubeDiv);
+  for (int i = 0; i < ringDiv; ++i)
+    for (int j = 0; j < tubeDiv; ++j) {
+      const double u = 2 * M_PI * i / ringDiv, v = 2 * M_PI * j / tubeDiv;
+      auto &vert = m.vert[i * tubeDiv + j];
+      vert.P() = centre + Point3((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+      vert.T().U() = double(i) / ringDiv;
+      vert.T().V() = double(j) / tubeDiv;
+    }
+  for (int i = 0; i < ringDiv; ++i)
+    for (int j = 0; j < tubeDiv; ++j) {
+      const int a = i * tubeDiv + j, b = ((i + 1) % ringDiv) * tubeDiv + j;
+      const int c = ((i + 1) % ringDiv) * tubeDiv + (j + 1) % tubeDiv, d = i * tubeDiv + (j + 1) % tubeDiv;
+      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
+      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+    }
+  Finish(m);
+}
+
+} // namespace eulermap::testing

@@ -1,0 +1,27 @@
+// Test and benchmark support: loading the shared meshes and making analytic shapes.
+#pragma once
+
+#include "core/mesh.h"
+
+#include <string>
+
+namespace eulermap::testing {
+
+// Path of a file in ../shared/data/meshes (relative to the project's root).
+std::string DataMesh(const std::string &name);
+// Path of a file in samples/.
+std::string SampleFile(const std::string &name);
+
+// Loads .off, .obj or .ply into m (positions, faces, wedge/vertex texcoords when present),
+// removes unreferenced vertices and updates normals and the bounding box. Throws on failure.
+void LoadMesh(const std::string &path, Mesh &m);
+
+// Analytic shapes, closed and outward-oriented, normals and box updated.
+void MakeSphere(Mesh &m, const Point3 &centre, double radius, int subdivisions = 4);
+void MakeEllipsoid(Mesh &m, const Point3 &centre, const Point3 &radii, int subdivisions = 4);
+void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide = 1);  // 8 vertices with cellsPerSide = 1
+// Torus around the z axis: ring radius R, tube radius r; per-vertex texcoords = the
+// (ring, tube) angles / 2pi.
+void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv = 64, int tubeDiv = 32);
+
+} // namespace eulermap::testing
