@@ -1,1 +1,207 @@
-// (in progress)
+#include "pipeline.h"
+
+#include "closest.h"
+#include "grid.h"
+#include "morph.h"
+#include "quality.h"
+#include "sdf.h"
+#include "topology.h"
+#include "tracker.h"
+#include "transfer.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/append.h>
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+namespace eulermap {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
+
+// Peak resident set size of this process (Linux), 0 when unknown.
+long PeakMemoryKiB() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
+  return 0;
+}
+
+// Sets OpenMP's thread count for the lifetime of the object, and restores it.
+class ThreadScope {
+ public:
+  explicit ThreadScope(int threads) : saved_(omp_get_max_threads()) {
+    if (threads > 0) omp_set_num_threads(threads);
+  }
+  ~ThreadScope() { omp_set_num_threads(saved_); }
+
+ private:
+  int saved_;
+};
+
+void CopyMesh(Mesh &to, Mesh &from) {
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(to, from, false, true);
+  vcg::tri::UpdateBounding<Mesh>::Box(to);
+}
+
+int LiveFaces(const Mesh &m) { return m.fn; }
+
+void Validate(const Mesh &source, const Mesh &target, const std::vector<AnchorPair> &anchors, const Options &o) {
+  if (&source == &target) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
+  if (LiveFaces(source) == 0) throw Error("the source mesh has no faces: the map needs a triangle mesh");
+  if (LiveFaces(target) == 0) throw Error("the target mesh has no faces: the map needs a triangle mesh");
+  if (o.gridResolution < 8) throw Error("grid_resolution must be at least 8 cells");
+  if (o.steps < 1) throw Error("steps must be at least 1");
+  if (!(o.alpha > 0)) throw Error("alpha must be positive");
+  if (!(o.holeRadius > 0)) throw Error("hole_radius must be positive");
+  (void)anchors;
+}
+
+std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align align) {
+  if (anchors.size() == 1) return "translation fitted to 1 anchor";
+  if (anchors.size() == 2) return "similarity fitted to 2 anchors (scale and direction)";
+  if (anchors.size() >= 3) return "similarity fitted to " + std::to_string(anchors.size()) + " anchors (least squares)";
+  return align == Align::None ? "none (target as it is)" : "centre-and-scale (centroid and bounding-box diagonal)";
+}
+
+} // namespace
+
+void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &anchors, const Options &options,
+                Result &result, const Progress &progress) {
+  Validate(source, target, anchors, options);
+  const ThreadScope threads(options.threads);
+  auto report = [&](double share, const std::string &stage) {
+    if (progress && !progress(share, stage)) throw Error("cancelled");
+  };
+  Report &rep = result.report;
+  rep = Report();
+  rep.steps = options.steps;
+  rep.alpha = options.alpha;
+  rep.anchors = int(anchors.size());
+  rep.threads = omp_get_max_threads();
+  rep.solver = options.solver == VelocitySolver::Method::ConjugateGradient ? "conjugate gradients" : "Gauss-Seidel";
+  rep.sourceVertices = source.vn;
+  rep.placement = DescribePlacement(anchors, options.align);
+
+  vcg::tri::UpdateBounding<Mesh>::Box(source);
+  vcg::tri::UpdateBounding<Mesh>::Box(target);
+
+  // Placement P of the target in the source's frame (placement.h).
+  std::vector<Point3> a, b;
+  for (const AnchorPair &p : anchors) a.push_back(p.source), b.push_back(p.target);
+  const Similarity place = FitPlacement(source, target, b, a, options.align);
+  Mesh placed;
+  CopyMesh(placed, target);
+  Transform(placed, place);
+  std::vector<Point3> bPlaced;
+  for (const Point3 &p : b) bPlaced.push_back(place.Apply(p));
+
+  // Grid over both (grid.h).
+  Box3 box = source.bbox;
+  box.Add(placed.bbox);
+  const Grid grid = options.gridNodes == vcg::Point3i(0, 0, 0) ? Grid::Enclosing(box, options.gridResolution)
+                                                                : Grid::WithNodes(box, options.gridNodes);
+  if (grid.NodeCount() > options.maxGridNodes)
+    throw Error("the grid would have " + std::to_string(grid.NodeCount()) + " nodes, more than the " +
+                std::to_string(options.maxGridNodes) + " that fit in memory: lower grid_resolution");
+  rep.gridNodes = grid.dims;
+  rep.cellSize = grid.h;
+
+  // SDF: f0, f1 (sdf.h).
+  report(0.0, "signed distance fields");
+  auto t0 = Clock::now();
+  const ScalarField f0 = SignedDistance(source, grid);
+  report(0.05, "signed distance fields");
+  const ScalarField f1 = SignedDistance(placed, grid);
+  rep.times.sdf = Seconds(t0);
+
+  // INT set-up: anchors' interpolation (morph.h).
+  t0 = Clock::now();
+  const Morph morph(f0, f1, a, bPlaced);
+  rep.morphMode = morph.Describe();
+  ScalarField fCur, fNext;
+  morph.Frame(0, fCur);
+  rep.times.interp += Seconds(t0);
+
+  // Tracked points: the source's vertices, then the anchors a_i.
+  std::vector<Point3> points;
+  points.reserve(source.vert.size() + a.size());
+  for (const Vertex &v : source.vert) points.push_back(v.cP());
+  points.insert(points.end(), a.begin(), a.end());
+  Tracker tracker(std::move(points), fCur);
+
+  VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
+  VectorField V;
+  const double dt = 1.0 / options.steps;
+  for (int k = 0; k < options.steps; ++k) {
+    report(0.1 + 0.8 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
+    t0 = Clock::now();
+    morph.Frame((k + 1) * dt, fNext);  // INT: f(., t_k+1), Eq. 1
+    rep.times.interp += Seconds(t0);
+    t0 = Clock::now();
+    const VelocitySolve s = solver.Solve(fCur, fNext, dt, V);  // VF: V_k, Eqs. 2-5
+    rep.times.velocity += Seconds(t0);
+    rep.solverFigures.totalIterations += s.iterations;
+    rep.solverFigures.maxIterations = std::max(rep.solverFigures.maxIterations, s.iterations);
+    rep.solverFigures.maxFinalResidual = std::max(rep.solverFigures.maxFinalResidual, s.residual);
+    t0 = Clock::now();
+    tracker.Advance(V, fNext, dt);  // DEF: Eq. 7
+    rep.times.deform += Seconds(t0);
+    std::swap(fCur, fNext);
+  }
+
+  // Images on the placed target: measure, then project onto the target mesh itself.
+  report(0.9, "measuring the map");
+  t0 = Clock::now();
+  const ClosestPoint placedIndex(placed);
+  const double diag = placed.bbox.Diag();
+  const std::vector<Point3> &tracked = tracker.Points();
+  const std::vector<Point3> images(tracked.begin(), tracked.begin() + source.vert.size());
+  rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
+  std::vector<ClosestHit> hits(images.size());
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(images.size()); ++n) hits[n] = placedIndex.Query(images[n]);
+  for (std::size_t n = 0; n < a.size(); ++n)
+    rep.quality.anchorErrorCells = std::max(rep.quality.anchorErrorCells,
+                                            vcg::Distance(placedIndex.Query(tracked[images.size() + n]).point, bPlaced[n]) / grid.h);
+
+  // Outputs: cut (source with TargetPosition), mapped (vertices at their images).
+  const Similarity back = place.Inverse();
+  Mesh &cut = result.cut;
+  cut.Clear();
+  CopyMesh(cut, source);
+  auto targetPosition = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
+  for (std::size_t n = 0; n < cut.vert.size(); ++n) targetPosition[n] = back.Apply(hits[n].point);
+  if (options.transferTexture) PullTexCoords(cut, target, hits, placed);
+
+  Mesh &mapped = result.mapped;
+  mapped.Clear();
+  CopyMesh(mapped, cut);
+  for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
+  vcg::tri::UpdateBounding<Mesh>::Box(mapped);
+  vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(mapped);
+
+  const ClosestPoint targetIndex(target);
+  rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag());
+  rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
+  rep.quality.longestEdgeCells = LongestEdge(mapped) * place.scale / grid.h;
+  rep.quality.meanDistortion = StoreDistortion(cut, mapped);
+  const Topology topo = MeasureTopology(cut);
+  rep.cutComponents = topo.components;
+  rep.cutBoundaryLoops = topo.boundaryLoops;
+  rep.cutEulerCharacteristic = topo.eulerCharacteristic;
+  rep.times.quality = Seconds(t0);
+  rep.peakMemoryKiB = PeakMemoryKiB();
+  report(1.0, "done");
+}
+
+} // namespace eulermap

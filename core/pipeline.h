@@ -13,6 +13,7 @@
 #include "mesh.h"
 #include "placement.h"
 #include "report.h"
+#include "velocity.h"
 
 #include <functional>
 #include <stdexcept>
@@ -31,15 +32,14 @@ struct AnchorPair {
   std::string name;
 };
 
-enum class Solver { ConjugateGradient, GaussSeidel };
-
 struct Options {
   int gridResolution = 64;   // cells on the longest axis of the common box
+  vcg::Point3i gridNodes = vcg::Point3i(0, 0, 0);  // if set: exactly these node counts (benchmark)
   int steps = 40;            // time steps from t = 0 to 1
   double alpha = 2;          // smoothness weight of Eq. 2
   double holeRadius = 1;     // sphere radius around a saddle, in grid cells
   Align align = Align::CentreAndScale;  // placement when there are no anchors
-  Solver solver = Solver::ConjugateGradient;
+  VelocitySolver::Method solver = VelocitySolver::Method::ConjugateGradient;
   double tolerance = 1e-4;   // relative residual that ends a velocity solve
   int maxIterations = 500;   // per step
   bool fillHoles = false;

@@ -1,1 +1,51 @@
-// (in progress)
+#include "report.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <sstream>
+
+namespace eulermap {
+
+namespace {
+std::string Format(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char *fmt, ...) {
+  char buffer[512];
+  va_list args;
+  va_start(args, fmt);
+  vsnprintf(buffer, sizeof buffer, fmt, args);
+  va_end(args);
+  return buffer;
+}
+} // namespace
+
+std::string Report::ToText() const {
+  std::ostringstream o;
+  o << Format("grid: %d x %d x %d nodes, cell %.6g; steps: %d; alpha: %g; threads: %d\n", gridNodes.X(),
+              gridNodes.Y(), gridNodes.Z(), cellSize, steps, alpha, threads);
+  o << Format("source vertices: %d; anchors: %d; placement: %s; morph: %s\n", sourceVertices, anchors,
+              placement.c_str(), morphMode.c_str());
+  o << Format("velocity solver: %s, %ld iterations in all, at most %d in a step, final residual at most %.2e\n",
+              solver.c_str(), solverFigures.totalIterations, solverFigures.maxIterations, solverFigures.maxFinalResidual);
+  o << Format("saddles: %zu\n", saddles.size());
+  for (std::size_t n = 0; n < saddles.size(); ++n) {
+    const SaddleEvent &s = saddles[n];
+    o << Format("  saddle %zu: step %d at (%.4g, %.4g, %.4g), %d expanding direction%s, %s\n", n, s.step,
+                s.position.X(), s.position.Y(), s.position.Z(), s.expandingDirections,
+                s.expandingDirections == 1 ? "" : "s", s.cut ? "cut" : "not cut (away from the surface)");
+  }
+  o << Format("holes cut: %zu\n", holes.size());
+  for (const HoleEvent &h : holes)
+    o << Format("  hole at saddle %d: %d faces removed, rim length %.4g\n", h.saddle, h.facesRemoved, h.rimLength);
+  o << Format("cut source: %d component%s, %d boundary loop%s, Euler characteristic %d\n", cutComponents,
+              cutComponents == 1 ? "" : "s", cutBoundaryLoops, cutBoundaryLoops == 1 ? "" : "s", cutEulerCharacteristic);
+  o << Format("times (s): SDF %.3f, INT %.3f, VF %.3f, DEF %.3f, total %.3f (quality measures %.3f)\n", times.sdf,
+              times.interp, times.velocity, times.deform, times.Total(), times.quality);
+  o << Format("map quality: on-surface %.2f%%, coverage %.2f%%, flipped area %.2f%%, longest mapped edge %.2f cells, "
+              "anchor error %.2f cells, mean distortion %.3f\n",
+              100 * quality.onSurfaceRate, 100 * quality.coverage, 100 * quality.flippedAreaShare,
+              quality.longestEdgeCells, quality.anchorErrorCells, quality.meanDistortion);
+  if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
+  return o.str();
+}
+
+} // namespace eulermap

@@ -1,1 +1,166 @@
-// (in progress)
+#include "velocity.h"
+
+#include <cmath>
+
+namespace eulermap {
+
+namespace {
+double Dot(const std::vector<Point3> &a, const std::vector<Point3> &b) {
+  double s = 0;
+#pragma omp parallel for reduction(+ : s) schedule(static)
+  for (long n = 0; n < long(a.size()); ++n) s += a[n] * b[n];
+  return s;
+}
+} // namespace
+
+int VelocitySolver::Neighbours(int i, int j, int k) const {
+  const vcg::Point3i &d = grid_.dims;
+  return (i > 0) + (i + 1 < d.X()) + (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());
+}
+
+VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V) {
+  grid_ = fk.grid;
+  const std::size_t n = grid_.NodeCount();
+  if (V.values.size() != n || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
+  g_.resize(n);
+  b_.resize(n);
+  // g = grad of (f_k + f_k+1)/2, f_t = (f_k+1 - f_k)/dt, b = -g f_t  (right-hand side of (*)).
+  const vcg::Point3i d = grid_.dims;
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < d.Z(); ++k)
+    for (int j = 0; j < d.Y(); ++j)
+      for (int i = 0; i < d.X(); ++i) {
+        const std::size_t idx = grid_.Index(i, j, k);
+        const Point3 g = (fk.NodeGradient(i, j, k) + fk1.NodeGradient(i, j, k)) * 0.5;
+        g_[idx] = g;
+        b_[idx] = g * -((fk1.values[idx] - fk.values[idx]) / dt);
+      }
+  VelocitySolve s = method_ == Method::ConjugateGradient ? SolveConjugateGradient(V) : SolveGaussSeidel(V);
+  g_.clear();
+  g_.shrink_to_fit();
+  b_.clear();
+  b_.shrink_to_fit();
+  return s;
+}
+
+void VelocitySolver::Apply(const std::vector<Point3> &x, std::vector<Point3> &out) const {
+  const vcg::Point3i d = grid_.dims;
+  const long sx = 1, sy = d.X(), sz = long(d.X()) * d.Y();
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < d.Z(); ++k)
+    for (int j = 0; j < d.Y(); ++j)
+      for (int i = 0; i < d.X(); ++i) {
+        const long idx = long(grid_.Index(i, j, k));
+        Point3 lap(0, 0, 0);  // sum_j (V_i - V_j)
+        if (i > 0) lap += x[idx] - x[idx - sx];
+        if (i + 1 < d.X()) lap += x[idx] - x[idx + sx];
+        if (j > 0) lap += x[idx] - x[idx - sy];
+        if (j + 1 < d.Y()) lap += x[idx] - x[idx + sy];
+        if (k > 0) lap += x[idx] - x[idx - sz];
+        if (k + 1 < d.Z()) lap += x[idx] - x[idx + sz];
+        const Point3 &g = g_[idx];
+        out[idx] = g * (g * x[idx]) + lap * alpha_;
+      }
+}
+
+double VelocitySolver::Residual(const VectorField &V, std::vector<Point3> &r) const {
+  Apply(V.values, r);
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(r.size()); ++n) r[n] = b_[n] - r[n];
+  return std::sqrt(Dot(r, r));
+}
+
+VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V) {
+  const std::size_t n = grid_.NodeCount();
+  const double bNorm = std::sqrt(Dot(b_, b_));
+  VelocitySolve s;
+  if (bNorm == 0) {
+    std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
+    return s;
+  }
+  std::vector<Point3> r(n), z(n), p(n), q(n);
+  double rNorm = Residual(V, r);
+  // z = M^-1 r with M the 3x3 diagonal blocks g g^T + alpha n_i I (Sherman-Morrison).
+  auto precondition = [&](const std::vector<Point3> &in, std::vector<Point3> &out) {
+    const vcg::Point3i d = grid_.dims;
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < d.Z(); ++k)
+      for (int j = 0; j < d.Y(); ++j)
+        for (int i = 0; i < d.X(); ++i) {
+          const std::size_t idx = grid_.Index(i, j, k);
+          const double c = alpha_ * Neighbours(i, j, k);
+          const Point3 &g = g_[idx];
+          out[idx] = (in[idx] - g * ((g * in[idx]) / (c + g.SquaredNorm()))) / c;
+        }
+  };
+  precondition(r, z);
+  p = z;
+  double rz = Dot(r, z);
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+    Apply(p, q);
+    const double step = rz / Dot(p, q);
+#pragma omp parallel for schedule(static)
+    for (long m = 0; m < long(n); ++m) {
+      V.values[m] += p[m] * step;
+      r[m] -= q[m] * step;
+    }
+    rNorm = std::sqrt(Dot(r, r));
+    ++s.iterations;
+    precondition(r, z);
+    const double rzNext = Dot(r, z);
+    const double beta = rzNext / rz;
+    rz = rzNext;
+#pragma omp parallel for schedule(static)
+    for (long m = 0; m < long(n); ++m) p[m] = z[m] + p[m] * beta;
+  }
+  s.residual = rNorm / bNorm;
+  return s;
+}
+
+VelocitySolve VelocitySolver::SolveGaussSeidel(VectorField &V) {
+  const std::size_t n = grid_.NodeCount();
+  const double bNorm = std::sqrt(Dot(b_, b_));
+  VelocitySolve s;
+  if (bNorm == 0) {
+    std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
+    return s;
+  }
+  std::vector<Point3> r(n);
+  const vcg::Point3i d = grid_.dims;
+  const long sx = 1, sy = d.X(), sz = long(d.X()) * d.Y();
+  std::vector<Point3> &x = V.values;
+  double rNorm = Residual(V, r);
+  // Residuals cost as much as a sweep: check every few sweeps.
+  const int checkEvery = 10;
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+    for (int sweep = 0; sweep < checkEvery && s.iterations < maxIterations_; ++sweep, ++s.iterations)
+      for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(static)
+        for (int k = 0; k < d.Z(); ++k)
+          for (int j = 0; j < d.Y(); ++j)
+            for (int i = (j + k + colour) & 1; i < d.X(); i += 2) {
+              const long idx = long(grid_.Index(i, j, k));
+              Point3 sum(0, 0, 0);
+              int nb = 0;
+              if (i > 0) sum += x[idx - sx], ++nb;
+              if (i + 1 < d.X()) sum += x[idx + sx], ++nb;
+              if (j > 0) sum += x[idx - sy], ++nb;
+              if (j + 1 < d.Y()) sum += x[idx + sy], ++nb;
+              if (k > 0) sum += x[idx - sz], ++nb;
+              if (k + 1 < d.Z()) sum += x[idx + sz], ++nb;
+              // Eq. 5 from (*): V = Vbar - g (g . Vbar + f_t) / (alpha n + |g|^2), with
+              // b = -g f_t, written for a general b: solve (g g^T + c I) V = alpha sum + b.
+              const double c = alpha_ * nb;
+              const Point3 rhs = sum * alpha_ + b_[idx];
+              const Point3 &g = g_[idx];
+              x[idx] = (rhs - g * ((g * rhs) / (c + g.SquaredNorm()))) / c;
+            }
+      }
+    rNorm = Residual(V, r);
+  }
+  s.residual = rNorm / bNorm;
+  return s;
+}
+
+} // namespace eulermap
+

@@ -1,1 +1,147 @@
-int main(){return 0;}
+// eulermap_bench — the pipeline on configurations shaped like the paper's Table 1, and
+// on any two mesh files. One invocation measures one configuration (so that the peak
+// memory figure is that configuration's own); tests/bench/run collects the table.
+//
+//   eulermap_bench row N [--threads T] [--solver cg|gs]   one of the four Table 1 rows (N = 1..4)
+//   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a CELLS^3 grid
+//   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N]
+//
+// `row` and `grid` print one line of the table (`|`-separated); `map` prints the report.
+#include "tests/support/meshes.h"
+
+#include <vcg/complex/algorithms/refine.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+using namespace eulermap;
+using namespace eulermap::testing;
+
+namespace {
+
+struct Row {
+  const char *mesh;  // source, from ../shared/data/meshes
+  int refinements;   // midpoint subdivisions of every edge, to reach the paper's vertex count
+  vcg::Point3i nodes;
+  int anchors;
+  // Paper, Table 1: vertices and seconds for INT, VF, DEF.
+  int paperVertices;
+  double paperInt, paperVf, paperDef;
+};
+
+const Row kRows[4] = {
+    {"camelhead.off", 0, {50, 40, 120}, 15, 11488, 25, 180, 14},
+    {"bunny.off", 1, {30, 40, 30}, 0, 14425, 0.3, 26, 17},
+    {"decimated-knight.off", 2, {100, 80, 50}, 30, 8078, 85, 324, 10},
+    {"camelhead.off", 1, {40, 30, 40}, 21, 44170, 8, 34, 56},
+};
+
+// A smooth non-rigid deformation: stretch, bend and turn (the target of a row).
+Point3 Deform(const Point3 &p, const Box3 &box) {
+  const Point3 q = (p - box.Center()) / box.Diag();
+  const Point3 bent(1.3 * q.X(), 0.8 * q.Y() + 0.6 * q.X() * q.X(), q.Z() + 0.3 * q.Y() * q.X());
+  const double c = std::cos(0.4), s = std::sin(0.4);
+  return Point3(c * bent.X() - s * bent.Z(), bent.Y(), s * bent.X() + c * bent.Z()) * box.Diag();
+}
+
+// Anchors: farthest-point samples among the source's vertices, and their deformed images.
+std::vector<AnchorPair> SampleAnchors(const Mesh &source, const Mesh &target, int count) {
+  std::vector<AnchorPair> anchors;
+  if (count == 0) return anchors;
+  std::vector<double> distance(source.vert.size(), 1e300);
+  std::size_t next = 0;
+  for (int a = 0; a < count; ++a) {
+    anchors.push_back({source.vert[next].cP(), target.vert[next].cP(), "a" + std::to_string(a)});
+    for (std::size_t v = 0; v < source.vert.size(); ++v)
+      distance[v] = std::min(distance[v], vcg::Distance(source.vert[v].cP(), source.vert[next].cP()));
+    next = std::max_element(distance.begin(), distance.end()) - distance.begin();
+  }
+  return anchors;
+}
+
+void Refine(Mesh &m, int times) {
+  for (int r = 0; r < times; ++r) {
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
+    vcg::tri::Refine<Mesh, vcg::tri::MidPoint<Mesh>>(m, vcg::tri::MidPoint<Mesh>(&m), 0);
+  }
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+}
+
+void PrintRow(const std::string &name, const Report &r, double paperTotal) {
+  const StageTimes &t = r.times;
+  std::printf("%s | %dx%dx%d | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %ld / %d | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f | %s\n",
+              name.c_str(), r.gridNodes.X(), r.gridNodes.Y(), r.gridNodes.Z(), r.sourceVertices, r.anchors, t.sdf, t.interp,
+              t.velocity, t.deform, t.Total(), r.solverFigures.totalIterations, r.solverFigures.maxIterations,
+              r.peakMemoryKiB / 1024.0, 100 * r.quality.onSurfaceRate, 100 * r.quality.coverage,
+              100 * r.quality.flippedAreaShare, r.quality.anchorErrorCells,
+              paperTotal > 0 ? paperTotal / t.Total() : 0.0,
+              paperTotal > 0 ? "x (paper INT+VF+DEF over our SDF+INT+VF+DEF)" : "");
+}
+
+int Flag(int argc, char **argv, const char *name, int fallback) {
+  for (int i = 0; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], name)) return std::atoi(argv[i + 1]);
+  return fallback;
+}
+
+Options OptionsFrom(int argc, char **argv) {
+  Options o;
+  o.threads = Flag(argc, argv, "--threads", 0);
+  o.gridResolution = Flag(argc, argv, "--grid", o.gridResolution);
+  o.steps = Flag(argc, argv, "--steps", o.steps);
+  for (int i = 0; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], "--solver") && !std::strcmp(argv[i + 1], "gs")) o.solver = VelocitySolver::Method::GaussSeidel;
+  return o;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s row N | grid CELLS | map SOURCE TARGET [SOURCE.pp TARGET.pp] [options]\n", argv[0]);
+    return 2;
+  }
+  const std::string mode = argv[1];
+  Options options = OptionsFrom(argc, argv);
+  Mesh source, target;
+  std::vector<AnchorPair> anchors;
+  Result result;
+  try {
+    if (mode == "row") {
+      const Row &row = kRows[std::atoi(argv[2]) - 1];
+      LoadMesh(DataMesh(row.mesh), source);
+      Refine(source, row.refinements);
+      LoadMesh(DataMesh(row.mesh), target);
+      Refine(target, row.refinements);
+      for (Vertex &v : target.vert) v.P() = Deform(v.P(), source.bbox);
+      anchors = SampleAnchors(source, target, row.anchors);
+      options.gridNodes = row.nodes;
+      options.steps = 40;
+      ComputeMap(source, target, anchors, options, result);
+      PrintRow(std::string("Table 1 row ") + argv[2], result.report, row.paperInt + row.paperVf + row.paperDef);
+    } else if (mode == "grid") {
+      MakeSphere(source, Point3(0, 0, 0), 1, 5);
+      MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.4, 0.8, 0.9), 5);
+      options.gridResolution = std::atoi(argv[2]);
+      options.align = Align::None;
+      ComputeMap(source, target, anchors, options, result);
+      PrintRow(std::string("grid ") + argv[2] + "^3", result.report, 0);
+    } else if (mode == "map") {
+      LoadMesh(argv[2], source);
+      LoadMesh(argv[3], target);
+      if (argc > 5 && argv[4][0] != '-') anchors = ReadAnchorPairs(argv[4], argv[5]);
+      ComputeMap(source, target, anchors, options, result);
+      std::printf("%s", result.report.ToText().c_str());
+    } else {
+      std::fprintf(stderr, "unknown mode %s\n", mode.c_str());
+      return 2;
+    }
+  } catch (const std::exception &e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -84,3 +84,47 @@ void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv, i
 }
 
 } // namespace eulermap::testing
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace eulermap::testing {
+
+namespace {
+std::map<std::string, Point3> ReadPickedPoints(const std::string &path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  std::map<std::string, Point3> points;
+  const std::regex point("<point\\b[^>]*>");
+  auto attribute = [](const std::string &tag, const std::string &name) {
+    std::smatch m;
+    if (!std::regex_search(tag, m, std::regex("\\b" + name + "=\"([^\"]*)\""))) return std::string();
+    return m[1].str();
+  };
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), point); it != std::sregex_iterator(); ++it) {
+    const std::string tag = it->str();
+    if (attribute(tag, "active") == "0") continue;
+    points[attribute(tag, "name")] = Point3(std::stod(attribute(tag, "x")), std::stod(attribute(tag, "y")), std::stod(attribute(tag, "z")));
+  }
+  return points;
+}
+} // namespace
+
+std::vector<AnchorPair> ReadAnchorPairs(const std::string &sourcePP, const std::string &targetPP) {
+  const auto a = ReadPickedPoints(sourcePP), b = ReadPickedPoints(targetPP);
+  std::vector<AnchorPair> pairs;
+  for (const auto &[name, p] : a) {
+    auto q = b.find(name);
+    if (q == b.end()) throw std::runtime_error("anchor " + name + " is in " + sourcePP + " only");
+    pairs.push_back({p, q->second, name});
+  }
+  if (pairs.size() != b.size()) throw std::runtime_error(targetPP + " has anchors that " + sourcePP + " lacks");
+  return pairs;
+}
+
+} // namespace eulermap::testing

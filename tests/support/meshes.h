@@ -25,3 +25,15 @@ void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide = 1);  // 8 vertices wit
 void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv = 64, int tubeDiv = 32);
 
 } // namespace eulermap::testing
+
+#include "core/pipeline.h"
+
+#include <vector>
+
+namespace eulermap::testing {
+
+// Anchor pairs from two MeshLab picked-points files, matched by point name (a plain
+// reader for the tests; the plugin reads .pp files with Qt's XML reader).
+std::vector<AnchorPair> ReadAnchorPairs(const std::string &sourcePP, const std::string &targetPP);
+
+} // namespace eulermap::testing

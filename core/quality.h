@@ -1,0 +1,31 @@
+// Measures of the map F: M0 -> M1 that the report, the tests and the benchmark share
+// (definitions in report.h, MapQuality).
+#pragma once
+
+#include "closest.h"
+#include "report.h"
+
+#include <vector>
+
+namespace eulermap {
+
+// Share of points within `tolerance` of the surface indexed by `surface`.
+double OnSurfaceRate(const std::vector<Point3> &points, const ClosestPoint &surface, double tolerance);
+
+// Share of `samples` uniform random points on `target` (fixed seed) lying within
+// `tolerance` of the surface `mapped`.
+double Coverage(Mesh &target, Mesh &mapped, double tolerance, int samples = 20000);
+
+// Area share of the faces of `mapped` whose normal points against the normal of the
+// target face nearest to their centroid.
+double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target);
+
+// Longest edge of m.
+double LongestEdge(const Mesh &m);
+
+// Per-vertex area distortion |log2(A_mapped / A_source)|, A the area of the faces around
+// the vertex and the ratio normalised by the total areas, written to the vertices'
+// quality of `cut` (which shares faces and vertex order with `mapped`); returns the mean.
+double StoreDistortion(Mesh &cut, const Mesh &mapped);
+
+} // namespace eulermap

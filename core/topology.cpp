@@ -1,0 +1,27 @@
+#include "topology.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+namespace eulermap {
+
+Topology MeasureTopology(Mesh &m) {
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
+  Topology t;
+  t.components = vcg::tri::Clean<Mesh>::CountConnectedComponents(m);
+  t.boundaryLoops = vcg::tri::Clean<Mesh>::CountHoles(m);
+  int edges = 0, boundaryEdges = 0, nonManifoldEdges = 0;
+  vcg::tri::Clean<Mesh>::CountEdgeNum(m, edges, boundaryEdges, nonManifoldEdges);
+  std::vector<bool> used(m.vert.size(), false);
+  int faces = 0;
+  for (const Face &f : m.face)
+    if (!f.IsD()) {
+      ++faces;
+      for (int c = 0; c < 3; ++c) used[vcg::tri::Index(m, f.cV(c))] = true;
+    }
+  const int vertices = int(std::count(used.begin(), used.end(), true));
+  t.eulerCharacteristic = vertices - edges + faces;
+  return t;
+}
+
+} // namespace eulermap

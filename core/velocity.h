@@ -1,0 +1,62 @@
+// eulermap::VelocitySolver — the velocity field V_k of one time step (Eqs. 2-5).
+//
+// V_k minimises the discrete form of Eq. 2 on the grid nodes,
+//
+//   E(V) = sum_nodes (g . V + f_t)^2 + alpha * sum_grid_edges |V_i - V_j|^2,
+//
+// with g = grad f and f_t = df/dt taken between the frames f(., t_k) and f(., t_k+1)
+// (g of their mean, f_t their difference over dt). The smoothness term is |grad V|^2
+// with derivatives in grid units, so alpha does not depend on the model's size. Setting
+// dE/dV_i = 0 gives, per node i with n_i grid neighbours (Eqs. 3-4, with Eq. 3's third
+// line reading f_z f_t),
+//
+//   (g g^T + alpha n_i I) V_i - alpha sum_j V_j = -g f_t,                     (*)
+//
+// a symmetric positive definite system. Two solvers:
+//   - Gauss-Seidel, the paper's update (Eq. 5, derived from (*) with one alpha, by the
+//     Sherman-Morrison formula): V_i = Vbar - g (g . Vbar + f_t) / (alpha n_i + |g|^2),
+//     Vbar = sum_j V_j / n_i; red-black ordering so that both colours run in parallel;
+//   - conjugate gradients preconditioned by the exact inverse of each node's 3x3 block.
+// Both start from the V passed in (the previous step's: a warm start).
+#pragma once
+
+#include "field.h"
+
+namespace eulermap {
+
+struct VelocitySolve {
+  int iterations = 0;
+  double residual = 0;  // ||b - A V|| / ||b|| at the end, b = -g f_t
+};
+
+class VelocitySolver {
+ public:
+  enum class Method { ConjugateGradient, GaussSeidel };
+
+  VelocitySolver(double alpha, Method method, double tolerance, int maxIterations)
+      : alpha_(alpha), method_(method), tolerance_(tolerance), maxIterations_(maxIterations) {}
+
+  // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
+  //      and zeroed when its grid differs)
+  // out: V = V_k, and the solve's figures
+  VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V);
+
+ private:
+  VelocitySolve SolveConjugateGradient(VectorField &V);
+  VelocitySolve SolveGaussSeidel(VectorField &V);
+  // r = b - A V, returns ||r||.
+  double Residual(const VectorField &V, std::vector<Point3> &r) const;
+  // out = A x (the operator of (*)).
+  void Apply(const std::vector<Point3> &x, std::vector<Point3> &out) const;
+  int Neighbours(int i, int j, int k) const;
+
+  double alpha_;
+  Method method_;
+  double tolerance_;
+  int maxIterations_;
+  // Per-step data of (*): g and b = -g f_t per node (held only during Solve).
+  Grid grid_;
+  std::vector<Point3> g_, b_;
+};
+
+} // namespace eulermap
