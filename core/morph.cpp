@@ -1,1 +1,525 @@
-// (in progress)
+// eulermap::Morph — the anchor-guided morph f(p,t) of Eq. 1 (morph.h, DESIGN.md: morph.h).
+//
+//   f(p,t) = (1-t) f0(W_t->0(p)) + t f1(W_t->1(p))                           (Eq. 1)
+//
+// With 4 or more non-coplanar anchors the anchors move along q_i(t), found by
+// as-rigid-as-possible interpolation (Alexa, Cohen-Or, Levin 2000) of the tetrahedra
+// spanned by 4-subsets of the anchors, and the warps W_t->0, W_t->1 are 3-D thin-plate
+// RBF interpolants (phi(r) = r plus an affine part) through q_i(t) -> a_i and
+// q_i(t) -> b_i. Otherwise both warps are the identity (a plain linear blend).
+#include "morph.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <mutex>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_set>
+
+namespace eulermap {
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+Vec3 ToEigen(const Point3 &p) { return Vec3(p.X(), p.Y(), p.Z()); }
+Point3 ToPoint(const Vec3 &v) { return Point3(v.x(), v.y(), v.z()); }
+
+// Tuning constants (see Describe() and the report of the morph).
+constexpr double kCoplanarSource = 1e-2;  // a: smallest / largest singular value of the centred anchors
+constexpr double kCoplanarTarget = 1e-6;  // b: only truly flat target anchors break the TPS system
+constexpr double kMinTetQuality = 1e-2;   // tetrahedron kept when sqrt(2)|det E| / Lmax^3 >= this (regular = 1)
+constexpr double kMinFallbackQuality = 1e-4;  // best tetrahedron accepted for an anchor no kept one covers
+constexpr std::size_t kMaxTetrahedra = 30000;  // more 4-subsets than this: deterministic sample
+
+// Ratio smallest / largest singular value of the centred points (0 for < 2 distinct points).
+//   pts:     the points
+//   returns  sigma_3 / sigma_1, a scale-free flatness measure in [0,1]
+double Flatness(const std::vector<Point3> &pts) {
+  if (pts.size() < 2) return 0;
+  Eigen::MatrixX3d x(pts.size(), 3);
+  for (std::size_t i = 0; i < pts.size(); ++i) x.row(i) = ToEigen(pts[i]).transpose();
+  x.rowwise() -= x.colwise().mean();
+  const Vec3 s = Eigen::JacobiSVD<Eigen::MatrixX3d>(x).singularValues();
+  return s(0) > 0 ? s(2) / s(0) : 0;
+}
+
+// Shape quality of a tetrahedron: 6 sqrt(2) |volume| / (longest edge)^3, 1 for a regular
+// one, 0 for a flat one. Near-degenerate tetrahedra make the affine map A ill-conditioned.
+//   p:       the four corners
+double TetQuality(const std::array<Vec3, 4> &p) {
+  Mat3 e;
+  for (int c = 0; c < 3; ++c) e.col(c) = p[c + 1] - p[0];
+  double longest = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) longest = std::max(longest, (p[i] - p[j]).norm());
+  if (longest <= 0) return 0;
+  return std::sqrt(2.0) * std::abs(e.determinant()) / (longest * longest * longest);
+}
+
+// Binomial coefficient C(n, 4) in floating point (no overflow for any anchor count).
+double Choose4(std::size_t n) { return n < 4 ? 0 : double(n) * (n - 1) * (n - 2) * (n - 3) / 24; }
+
+// Union-find over anchor indices, to check the tetrahedra connect all anchors.
+struct Components {
+  std::vector<int> parent;
+  explicit Components(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int Find(int i) { return parent[i] == i ? i : parent[i] = Find(parent[i]); }
+  void Join(int i, int j) { parent[Find(i)] = Find(j); }
+};
+
+} // namespace
+
+// The two thin-plate warps of one time t. Both interpolate through the same nodes
+// q_i(t), so they share one (n+4) x (n+4) system and one distance evaluation per point.
+struct WarpPair {
+  double t = 0;
+  bool identity[2] = {false, false};  // W_t->0 (resp. W_t->1) is exactly the identity
+  Vec3 centre;                        // coordinates are normalised: y = (p - centre) / unit
+  double unit = 1;
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> nodes;    // q_i(t), normalised
+  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> weights;  // RBF weights, [to a | to b]
+  Eigen::Matrix<double, 4, 6> affine;                                 // rows: 1, y_x, y_y, y_z
+
+  // Evaluates both warps at p.
+  //   p:          world point
+  //   toSource:   out, W_t->0(p)
+  //   toTarget:   out, W_t->1(p)
+  void Evaluate(const Point3 &p, Point3 &toSource, Point3 &toTarget) const {
+    const Vec3 y = (ToEigen(p) - centre) / unit;
+    Eigen::Matrix<double, 1, 6> acc = affine.row(0) + y.x() * affine.row(1) + y.y() * affine.row(2) + y.z() * affine.row(3);
+    const Eigen::Index n = nodes.rows();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double dx = y.x() - nodes(i, 0), dy = y.y() - nodes(i, 1), dz = y.z() - nodes(i, 2);
+      acc += std::sqrt(dx * dx + dy * dy + dz * dz) * weights.row(i);  // phi(r) = r
+    }
+    toSource = identity[0] ? p : ToPoint(centre + unit * acc.head<3>().transpose());
+    toTarget = identity[1] ? p : ToPoint(centre + unit * acc.tail<3>().transpose());
+  }
+};
+
+struct Morph::Impl {
+  const ScalarField *f0 = nullptr, *f1 = nullptr;  // not owned; must outlive the Morph
+  std::vector<Point3> a, b;
+  Mode mode = Mode::LinearBlend;
+  std::string reason;  // why the linear blend was chosen
+
+  // ARAP data, all from the source tetrahedra (Alexa et al. 2000).
+  struct Tet {
+    std::array<int, 4> v;
+    Eigen::Quaterniond rotation;  // R of the polar decomposition A = R S (proper)
+    Mat3 stretch;                 // S (symmetric)
+    Eigen::Matrix<double, 3, 4> arm;  // 4 (a_v - centroid of the tet), the per-vertex normal-equation term
+  };
+  std::vector<Tet> tets;
+  double subsets = 0;             // C(n,4)
+  bool sampled = false;           // tets drawn from the subsets rather than all of them
+  std::size_t skipped = 0;        // near-degenerate subsets left out (full enumeration only)
+  std::size_t rescued = 0;        // below-threshold tetrahedra kept to cover an anchor
+  Eigen::LDLT<Eigen::MatrixXd> normal;  // L + c 1 1^T / n, factored once
+  double centroidWeight = 0;      // c
+  Vec3 centroidA, centroidB;
+  Vec3 centre;                    // TPS normalisation
+  double unit = 1;
+
+  mutable std::mutex cacheMutex;
+  mutable std::shared_ptr<const WarpPair> cache;  // the warps of the last t asked for
+
+  void Setup();
+  bool BuildTetrahedra();
+  std::vector<Point3> RawAnchors(double t) const;
+  std::shared_ptr<const WarpPair> Warps(double t) const;
+  std::shared_ptr<const WarpPair> SolveWarps(double t) const;
+};
+
+// Chooses the mode and, for ARAP+TPS, builds the tetrahedra, their polar decompositions
+// and the factored normal matrix. Throws std::invalid_argument for coincident anchors.
+void Morph::Impl::Setup() {
+  const std::size_t n = a.size();
+  if (n < 4) {
+    reason = n == 0 ? "no anchors" : std::to_string(n) + (n == 1 ? " anchor" : " anchors") + ", fewer than 4";
+    return;
+  }
+  if (Flatness(a) < kCoplanarSource) {
+    reason = std::to_string(n) + " anchors, coplanar on the source";
+    return;
+  }
+  if (Flatness(b) < kCoplanarTarget) {
+    reason = std::to_string(n) + " anchors, coplanar on the target";
+    return;
+  }
+  if (n >= 65536) throw std::invalid_argument("Morph: too many anchors (" + std::to_string(n) + ")");
+
+  // Normalisation of the TPS coordinates: centre and extent of all anchors.
+  centroidA = centroidB = Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    centroidA += ToEigen(a[i]);
+    centroidB += ToEigen(b[i]);
+  }
+  centroidA /= double(n);
+  centroidB /= double(n);
+  centre = 0.5 * (centroidA + centroidB);
+  unit = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    unit = std::max({unit, (ToEigen(a[i]) - centre).norm(), (ToEigen(b[i]) - centre).norm()});
+
+  // Coincident anchors make the TPS system singular (and contradict each other if their
+  // partners differ): a clear error.
+  for (const auto *side : {&a, &b})
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (vcg::Distance((*side)[i], (*side)[j]) <= 1e-9 * unit)
+          throw std::invalid_argument("Morph: anchors " + std::to_string(i) + " and " + std::to_string(j) +
+                                      " coincide on the " + (side == &a ? "source" : "target"));
+
+  if (!BuildTetrahedra()) return;  // reason set
+  mode = Mode::ArapTps;
+
+  // The endpoints must come out of the least-squares fit by themselves (q(0) = a,
+  // q(1) = b up to round-off); Anchors() then returns them exactly.
+  for (double t : {0.0, 1.0}) {
+    const std::vector<Point3> q = RawAnchors(t);
+    const std::vector<Point3> &want = t == 0 ? a : b;
+    double err = 0;
+    for (std::size_t i = 0; i < n; ++i) err = std::max(err, vcg::Distance(q[i], want[i]));
+    if (err > 1e-8 * unit)
+      throw std::logic_error("Morph: ARAP interpolation misses its endpoint at t=" + std::to_string(t) +
+                             " by " + std::to_string(err));
+  }
+}
+
+// Tetrahedra of the ARAP interpolation (Alexa et al. 2000): every 4-subset of the anchors
+// whose source tetrahedron is not near-degenerate (TetQuality >= kMinTetQuality); when
+// C(n,4) > kMaxTetrahedra, kMaxTetrahedra distinct subsets drawn by a fixed-seed
+// generator. An anchor that no kept tetrahedron contains gets its best one (if its
+// quality is at least kMinFallbackQuality). Then per tetrahedron the polar decomposition
+// of A, and the normal matrix of the least-squares fit.
+//   returns false (with `reason` set) when no usable set of tetrahedra exists
+bool Morph::Impl::BuildTetrahedra() {
+  const int n = int(a.size());
+  auto corners = [&](const std::array<int, 4> &v) {
+    std::array<Vec3, 4> p;
+    for (int c = 0; c < 4; ++c) p[c] = ToEigen(a[v[c]]);
+    return p;
+  };
+  auto key = [](std::array<int, 4> v) {
+    std::sort(v.begin(), v.end());
+    return (std::uint64_t(v[0]) << 48) | (std::uint64_t(v[1]) << 32) | (std::uint64_t(v[2]) << 16) | std::uint64_t(v[3]);
+  };
+
+  std::vector<std::array<int, 4>> chosen;
+  std::unordered_set<std::uint64_t> seen;
+  subsets = Choose4(n);
+  std::mt19937_64 random(0x65756c65726d6170ull);  // fixed seed: the same anchors give the same morph
+  if (subsets <= double(kMaxTetrahedra)) {
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        for (int k = j + 1; k < n; ++k)
+          for (int l = k + 1; l < n; ++l) {
+            const std::array<int, 4> v = {i, j, k, l};
+            if (TetQuality(corners(v)) >= kMinTetQuality) {
+              chosen.push_back(v);
+              seen.insert(key(v));
+            } else {
+              ++skipped;
+            }
+          }
+  } else {
+    sampled = true;
+    for (std::size_t attempt = 0; chosen.size() < kMaxTetrahedra && attempt < 20 * kMaxTetrahedra; ++attempt) {
+      std::array<int, 4> v;
+      for (int c = 0; c < 4; ++c) {
+        bool repeated;
+        do {
+          v[c] = int(random() % std::uint64_t(n));
+          repeated = std::find(v.begin(), v.begin() + c, v[c]) != v.begin() + c;
+        } while (repeated);
+      }
+      std::sort(v.begin(), v.end());
+      if (seen.count(key(v))) continue;
+      seen.insert(key(v));
+      if (TetQuality(corners(v)) >= kMinTetQuality) chosen.push_back(v);
+    }
+  }
+
+  // Coverage: every anchor must be in some tetrahedron, else its q_i(t) is undetermined.
+  std::vector<int> count(n, 0);
+  for (const auto &v : chosen)
+    for (int c : v) ++count[c];
+  for (int i = 0; i < n; ++i) {
+    if (count[i]) continue;
+    std::array<int, 4> best{};
+    double bestQuality = -1;
+    auto consider = [&](int j, int k, int l) {
+      const std::array<int, 4> v = {i, j, k, l};
+      const double q = TetQuality(corners(v));
+      if (q > bestQuality) bestQuality = q, best = v;
+    };
+    if (Choose4(n) <= 4.0 * kMaxTetrahedra) {  // C(n-1,3) <= C(n,4): search them all
+      for (int j = 0; j < n; ++j)
+        for (int k = j + 1; k < n; ++k)
+          for (int l = k + 1; l < n; ++l)
+            if (j != i && k != i && l != i) consider(j, k, l);
+    } else {
+      for (std::size_t attempt = 0; attempt < kMaxTetrahedra; ++attempt) {
+        int j = int(random() % n), k = int(random() % n), l = int(random() % n);
+        if (j != i && k != i && l != i && j != k && k != l && j != l) consider(j, k, l);
+      }
+    }
+    if (bestQuality < kMinFallbackQuality) {
+      reason = std::to_string(n) + " anchors, anchor " + std::to_string(i) + " spans no usable tetrahedron";
+      return false;
+    }
+    chosen.push_back(best);
+    ++rescued;
+    for (int c : best) ++count[c];
+  }
+  Components components(n);
+  for (const auto &v : chosen)
+    for (int c = 1; c < 4; ++c) components.Join(v[0], v[c]);
+  for (int i = 1; i < n; ++i)
+    if (components.Find(i) != components.Find(0)) {
+      reason = std::to_string(n) + " anchors, tetrahedra fall apart into separate groups";
+      return false;
+    }
+
+  // Per tetrahedron: A maps the source edge vectors onto the target's, A = R S.
+  Eigen::MatrixXd laplacian = Eigen::MatrixXd::Zero(n, n);
+  tets.reserve(chosen.size());
+  for (const auto &v : chosen) {
+    Tet tet;
+    tet.v = v;
+    Mat3 ea, eb;
+    for (int c = 0; c < 3; ++c) {
+      ea.col(c) = ToEigen(a[v[c + 1]]) - ToEigen(a[v[0]]);
+      eb.col(c) = ToEigen(b[v[c + 1]]) - ToEigen(b[v[0]]);
+    }
+    const Mat3 affine = eb * ea.inverse();
+    Eigen::JacobiSVD<Mat3> svd(affine, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Mat3 u = svd.matrixU();
+    const Mat3 w = svd.matrixV();
+    Vec3 sigma = svd.singularValues();
+    if ((u * w.transpose()).determinant() < 0) {  // keep R proper; S takes the reflection
+      u.col(2) = -u.col(2);
+      sigma(2) = -sigma(2);
+    }
+    tet.rotation = Eigen::Quaterniond(Mat3(u * w.transpose())).normalized();
+    tet.stretch = w * sigma.asDiagonal() * w.transpose();
+    Vec3 centroid = Vec3::Zero();
+    for (int c = 0; c < 4; ++c) centroid += ToEigen(a[v[c]]) / 4;
+    for (int c = 0; c < 4; ++c) tet.arm.col(c) = 4 * (ToEigen(a[v[c]]) - centroid);
+    tets.push_back(tet);
+    // Laplacian of the tetrahedron's 6 edges (K4): 3 on the diagonal, -1 off it.
+    for (int c = 0; c < 4; ++c)
+      for (int d = 0; d < 4; ++d) laplacian(v[c], v[d]) += c == d ? 3 : -1;
+  }
+  // The fit fixes positions up to a translation; the centroid term pins that down.
+  centroidWeight = laplacian.diagonal().mean();
+  laplacian.array() += centroidWeight / n;
+  normal.compute(laplacian);
+  if (normal.info() != Eigen::Success || (normal.vectorD().array() <= 0).any()) {
+    reason = std::to_string(n) + " anchors, singular ARAP system";
+    tets.clear();
+    return false;
+  }
+  return true;
+}
+
+// q(t) by the ARAP least-squares fit, without the exact-endpoint shortcut (Alexa 2000):
+//   minimise  sum_tets sum_edges(j,k) | (x_k - x_j) - A(t) (a_k - a_j) |^2
+//   subject to  mean(x) = (1-t) mean(a) + t mean(b),
+//   A(t) = R(t) ((1-t) I + t S),  R(t) = slerp(I, R, t).
+// Over all 6 edges of a tetrahedron the normal-equation term of vertex v is
+// A(t) * 4 (a_v - centroid); the centroid constraint enters as c 1 1^T / n (see Setup).
+//   t:       time (0 and 1 give a and b up to round-off)
+//   returns  the n positions q_i(t)
+std::vector<Point3> Morph::Impl::RawAnchors(double t) const {
+  const int n = int(a.size());
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(n, 3);
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  for (const Tet &tet : tets) {
+    const Mat3 at = identity.slerp(t, tet.rotation).toRotationMatrix() * ((1 - t) * Mat3::Identity() + t * tet.stretch);
+    const Eigen::Matrix<double, 3, 4> moved = at * tet.arm;
+    for (int c = 0; c < 4; ++c) rhs.row(tet.v[c]) += moved.col(c).transpose();
+  }
+  const Vec3 centroid = (1 - t) * centroidA + t * centroidB;
+  rhs.rowwise() += centroidWeight * centroid.transpose();
+  const Eigen::MatrixX3d x = normal.solve(rhs);
+  std::vector<Point3> q(n);
+  for (int i = 0; i < n; ++i) q[i] = ToPoint(x.row(i).transpose());
+  return q;
+}
+
+// Thin-plate warps of time t: solves [K P; P^T 0] [w; c] = [d; 0] once for both value
+// sets d = a (W_t->0) and d = b (W_t->1), with K_ij = |y_i - y_j| (phi(r) = r),
+// P_i = (1, y_i), y_i the normalised q_i(t).
+//   t:       time
+//   returns  the solved pair; a warp whose nodes equal its values is flagged identity
+std::shared_ptr<const WarpPair> Morph::Impl::SolveWarps(double t) const {
+  const int n = int(a.size());
+  auto pair = std::make_shared<WarpPair>();
+  pair->t = t;
+  pair->centre = centre;
+  pair->unit = unit;
+  std::vector<Point3> q;
+  if (t == 0) q = a;
+  else if (t == 1) q = b;
+  else q = RawAnchors(t);
+  pair->identity[0] = q == a;
+  pair->identity[1] = q == b;
+  pair->nodes.resize(n, 3);
+  for (int i = 0; i < n; ++i) pair->nodes.row(i) = ((ToEigen(q[i]) - centre) / unit).transpose();
+
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 4, n + 4);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n + 4, 6);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) m(i, j) = (pair->nodes.row(i) - pair->nodes.row(j)).norm();
+    m(i, n) = m(n, i) = 1;
+    for (int c = 0; c < 3; ++c) m(i, n + 1 + c) = m(n + 1 + c, i) = pair->nodes(i, c);
+    rhs.block<1, 3>(i, 0) = ((ToEigen(a[i]) - centre) / unit).transpose();
+    rhs.block<1, 3>(i, 3) = ((ToEigen(b[i]) - centre) / unit).transpose();
+  }
+  Eigen::MatrixXd solution = m.partialPivLu().solve(rhs);
+  if ((m * solution - rhs).norm() > 1e-10 * (1 + rhs.norm()))  // nodes (nearly) flat or colliding mid-morph
+    solution = m.completeOrthogonalDecomposition().solve(rhs);
+  pair->weights = solution.topRows(n);
+  pair->affine = solution.bottomRows(4);
+  return pair;
+}
+
+// The warps of time t, reusing the last solve when t repeats. Thread-safe.
+std::shared_ptr<const WarpPair> Morph::Impl::Warps(double t) const {
+  {
+    std::lock_guard<std::mutex> lock(cacheMutex);
+    if (cache && cache->t == t) return cache;
+  }
+  std::shared_ptr<const WarpPair> solved = SolveWarps(t);
+  std::lock_guard<std::mutex> lock(cacheMutex);
+  cache = solved;
+  return solved;
+}
+
+// Builds the morph between f0 and f1.
+//   f0, f1:  source and (placed) target fields on the same grid; not copied, they must
+//            outlive the Morph
+//   a, b:    matched anchors, a[i] on the source and b[i] on the placed target
+// Throws std::invalid_argument on grids that differ, anchor lists of different lengths,
+// or coincident anchors (with 4 or more non-coplanar ones).
+Morph::Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b)
+    : impl_(std::make_unique<Impl>()) {
+  if (f0.grid.dims != f1.grid.dims || f0.grid.origin != f1.grid.origin || f0.grid.h != f1.grid.h ||
+      f0.values.size() != f0.grid.NodeCount() || f1.values.size() != f1.grid.NodeCount())
+    throw std::invalid_argument("Morph: f0 and f1 must be filled fields on the same grid");
+  if (a.size() != b.size())
+    throw std::invalid_argument("Morph: " + std::to_string(a.size()) + " source anchors but " +
+                                std::to_string(b.size()) + " target anchors");
+  impl_->f0 = &f0;
+  impl_->f1 = &f1;
+  impl_->a = std::move(a);
+  impl_->b = std::move(b);
+  impl_->Setup();
+}
+
+Morph::~Morph() = default;
+
+Morph::Mode Morph::mode() const { return impl_->mode; }
+
+// One line for the report: the mode and what it was built from.
+std::string Morph::Describe() const {
+  const Impl &m = *impl_;
+  if (m.mode == Mode::LinearBlend) return "linear blend (" + m.reason + ")";
+  std::ostringstream s;
+  s << "ARAP+TPS, " << m.a.size() << " anchors, " << m.tets.size() << " tetrahedra";
+  if (m.sampled)
+    s << " (deterministic sample of " << std::llround(m.subsets) << " 4-subsets, near-degenerate ones left out)";
+  else if (m.skipped)
+    s << " (" << m.skipped << " near-degenerate of " << std::llround(m.subsets) << " 4-subsets left out)";
+  if (m.rescued) s << ", " << m.rescued << " below-threshold kept to cover anchors";
+  return s.str();
+}
+
+// f(., t) at every node of the grid (Eq. 1):
+//   out(node) = (1-t) f0(W_t->0(node)) + t f1(W_t->1(node)).
+//   t:    time, normally in [0,1]; t = 0 gives f0 and t = 1 gives f1 exactly
+//   out:  resized to the grid and overwritten
+// The two thin-plate systems are solved once, then nodes are evaluated in parallel.
+void Morph::Frame(double t, ScalarField &out) const {
+  const ScalarField &f0 = *impl_->f0, &f1 = *impl_->f1;
+  const Grid &g = f0.grid;
+  out.grid = g;
+  out.values.resize(g.NodeCount());
+  const long long count = (long long)g.NodeCount();
+
+  if (impl_->mode == Mode::LinearBlend) {  // W = identity
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < count; ++i) {
+      double v = 0;
+      if (t != 1) v += (1 - t) * f0.values[i];
+      if (t != 0) v += t * f1.values[i];
+      out.values[i] = v;
+    }
+    return;
+  }
+
+  const std::shared_ptr<const WarpPair> warps = impl_->Warps(t);
+  const WarpPair &w = *warps;
+  const bool use0 = t != 1, use1 = t != 0;  // a zero weight drops its term
+  const bool evaluate = (use0 && !w.identity[0]) || (use1 && !w.identity[1]);
+  const long long rows = (long long)g.dims.Y() * g.dims.Z();
+#pragma omp parallel for schedule(static)
+  for (long long r = 0; r < rows; ++r) {
+    const int j = int(r % g.dims.Y()), k = int(r / g.dims.Y());
+    for (int i = 0; i < g.dims.X(); ++i) {
+      const std::size_t idx = g.Index(i, j, k);
+      const Point3 p = g.Node(i, j, k);
+      Point3 p0 = p, p1 = p;
+      if (evaluate) w.Evaluate(p, p0, p1);
+      double v = 0;
+      if (use0) v += (1 - t) * (w.identity[0] ? f0.values[idx] : f0.Value(p0));
+      if (use1) v += t * (w.identity[1] ? f1.values[idx] : f1.Value(p1));
+      out.values[idx] = v;
+    }
+  }
+}
+
+// q_i(t): a_i at t = 0 and b_i at t = 1 exactly; in between the ARAP interpolation
+// (Alexa 2000), or the straight line (1-t) a_i + t b_i in linear-blend mode.
+std::vector<Point3> Morph::Anchors(double t) const {
+  const Impl &m = *impl_;
+  if (t == 0) return m.a;
+  if (t == 1) return m.b;
+  if (m.mode == Mode::ArapTps) return m.RawAnchors(t);
+  std::vector<Point3> q(m.a.size());
+  for (std::size_t i = 0; i < q.size(); ++i) q[i] = m.a[i] * (1 - t) + m.b[i] * t;
+  return q;
+}
+
+// W_t->0(p): the thin-plate warp with W_t->0(q_i(t)) = a_i (identity in linear-blend
+// mode and at t = 0). Thread-safe; solves (or reuses the last solve of) time t.
+Point3 Morph::WarpToSource(double t, const Point3 &p) const {
+  if (impl_->mode == Mode::LinearBlend) return p;
+  Point3 p0, p1;
+  impl_->Warps(t)->Evaluate(p, p0, p1);
+  return p0;
+}
+
+// W_t->1(p): the thin-plate warp with W_t->1(q_i(t)) = b_i (identity in linear-blend
+// mode and at t = 1). Thread-safe, as WarpToSource.
+Point3 Morph::WarpToTarget(double t, const Point3 &p) const {
+  if (impl_->mode == Mode::LinearBlend) return p;
+  Point3 p0, p1;
+  impl_->Warps(t)->Evaluate(p, p0, p1);
+  return p1;
+}
+
+} // namespace eulermap

@@ -26,6 +26,7 @@ class Morph {
   enum class Mode { LinearBlend, ArapTps };
 
   // f0, f1 on the same grid; anchors as matched lists (a[i] <-> b[i]), b already placed.
+  // f0 and f1 are not copied: they must outlive the Morph.
   Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b);
   ~Morph();
 

@@ -1,1 +1,184 @@
-// (in progress)
+// eulermap placement: the similarity P that puts the target in the source's frame
+// (placement.h). Umeyama's least-squares similarity for 3 or more anchors in general
+// position; simpler closed forms for 0, 1, 2 and collinear anchors.
+#include "placement.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace eulermap {
+
+namespace {
+
+Eigen::Vector3d ToEigen(const Point3 &p) { return Eigen::Vector3d(p.X(), p.Y(), p.Z()); }
+Point3 ToPoint(const Eigen::Vector3d &v) { return Point3(v.x(), v.y(), v.z()); }
+
+// Points as the columns of a 3 x n matrix.
+Eigen::Matrix3Xd Columns(const std::vector<Point3> &pts) {
+  Eigen::Matrix3Xd m(3, pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) m.col(i) = ToEigen(pts[i]);
+  return m;
+}
+
+// Axis-aligned box of the live vertices (independent of whether m.bbox is up to date).
+Box3 VertexBox(const Mesh &m) {
+  Box3 b;
+  for (const auto &v : m.vert)
+    if (!v.IsD()) b.Add(v.cP());
+  return b;
+}
+
+// Principal direction of the centred columns of `x` (3 x n) and its singular values.
+//   x:      points as columns, already centred
+//   sigma:  out, singular values (descending)
+//   returns the unit direction of largest spread
+Eigen::Vector3d PrincipalDirection(const Eigen::Matrix3Xd &x, Eigen::Vector3d &sigma) {
+  Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(x, Eigen::ComputeFullU);
+  sigma = svd.singularValues();
+  return svd.matrixU().col(0);
+}
+
+// Similarity taking points on (or near) a line onto points on a line: the "2-anchor
+// rule", also used when 3 or more anchors are (near) collinear, where Umeyama's
+// rotation about the line would be undetermined.
+//   from, to:  3 x n matrices of matched points (n >= 2)
+//   returns    rotation = the minimal rotation taking the principal direction of `from`
+//              onto that of `to` (sign chosen so the points keep their order along the
+//              line); scale = the least-squares scale of the positions along the line;
+//              translation takes the centroid of `from` onto that of `to`. With two
+//              points this maps the segment onto the segment exactly.
+Similarity LineRule(const Eigen::Matrix3Xd &from, const Eigen::Matrix3Xd &to) {
+  Similarity s;
+  const Eigen::Vector3d cf = from.rowwise().mean(), ct = to.rowwise().mean();
+  const Eigen::Matrix3Xd xf = from.colwise() - cf, xt = to.colwise() - ct;
+  Eigen::Vector3d sf, st;
+  const Eigen::Vector3d df = PrincipalDirection(xf, sf);
+  Eigen::Vector3d dt = PrincipalDirection(xt, st);
+  const Eigen::VectorXd along_f = xf.transpose() * df;
+  Eigen::VectorXd along_t = xt.transpose() * dt;
+  if (along_f.dot(along_t) < 0) {  // keep the order of the points along the line
+    dt = -dt;
+    along_t = -along_t;
+  }
+  const double denom = along_f.squaredNorm();
+  if (denom > 0 && along_t.squaredNorm() > 0) {
+    s.scale = along_f.dot(along_t) / denom;
+    s.rotation = Eigen::Quaterniond::FromTwoVectors(df, dt).toRotationMatrix();
+  }
+  s.translation = ct - s.scale * s.rotation * cf;
+  return s;
+}
+
+} // namespace
+
+Point3 Similarity::Apply(const Point3 &p) const { return ToPoint(scale * (rotation * ToEigen(p)) + translation); }
+
+Similarity Similarity::Inverse() const {
+  // p = s R x + t  =>  x = (1/s) R^T p - (1/s) R^T t
+  Similarity inv;
+  inv.rotation = rotation.transpose();
+  inv.scale = 1 / scale;
+  inv.translation = -inv.scale * (inv.rotation * translation);
+  return inv;
+}
+
+// Area-weighted centroid of the live faces: sum_f area_f * centre_f / sum_f area_f.
+//   mesh:    any triangle mesh (deleted faces are skipped)
+//   returns  the centroid; with no faces (or zero total area) the mean of the live
+//            vertices, and (0,0,0) for an empty mesh
+Point3 SurfaceCentroid(const Mesh &mesh) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (const auto &f : mesh.face) {
+    if (f.IsD()) continue;
+    const Eigen::Vector3d p0 = ToEigen(f.cP(0)), p1 = ToEigen(f.cP(1)), p2 = ToEigen(f.cP(2));
+    const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+    sum += a * (p0 + p1 + p2) / 3;
+    area += a;
+  }
+  if (area > 0) return ToPoint(sum / area);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (const auto &v : mesh.vert)
+    if (!v.IsD()) {
+      mean += ToEigen(v.cP());
+      ++n;
+    }
+  return n ? ToPoint(mean / n) : Point3(0, 0, 0);
+}
+
+// The placement P of placement.h.
+//   source, target: the meshes (used only without anchors, for Align::CentreAndScale)
+//   from:           target-side anchors b_i
+//   to:             source-side anchors a_i, matched to `from` by index
+//   align:          what to do without anchors
+//   returns         P with P(b_i) ~ a_i (least squares); throws std::invalid_argument
+//                   when the two anchor lists differ in length
+Similarity FitPlacement(const Mesh &source, const Mesh &target, const std::vector<Point3> &from,
+                        const std::vector<Point3> &to, Align align) {
+  if (from.size() != to.size())
+    throw std::invalid_argument("FitPlacement: " + std::to_string(from.size()) + " target anchors but " +
+                                std::to_string(to.size()) + " source anchors");
+  Similarity s;
+  const std::size_t n = from.size();
+  if (n == 0) {
+    if (align == Align::None) return s;
+    const Box3 bs = VertexBox(source), bt = VertexBox(target);
+    const double ds = bs.IsNull() ? 0 : bs.Diag(), dt = bt.IsNull() ? 0 : bt.Diag();
+    if (ds > 0 && dt > 0) s.scale = ds / dt;
+    s.translation = ToEigen(SurfaceCentroid(source)) - s.scale * ToEigen(SurfaceCentroid(target));
+    return s;
+  }
+
+  const Eigen::Matrix3Xd f = Columns(from), t = Columns(to);
+  const Eigen::Vector3d cf = f.rowwise().mean(), ct = t.rowwise().mean();
+  if (n == 1) {
+    s.translation = ct - cf;
+    return s;
+  }
+
+  // Spread of each side: coincident anchors give a translation only; (near) collinear
+  // ones the line rule (relative threshold 1e-3 on the second singular value, where
+  // a rotation about the line is set by noise rather than by the anchors).
+  Eigen::Vector3d sf, st;
+  PrincipalDirection(f.colwise() - cf, sf);
+  PrincipalDirection(t.colwise() - ct, st);
+  const double reach = std::max({1.0, f.cwiseAbs().maxCoeff(), t.cwiseAbs().maxCoeff()});
+  if (sf(0) <= 1e-12 * reach || st(0) <= 1e-12 * reach) {
+    s.translation = ct - cf;
+    return s;
+  }
+  const double kCollinear = 1e-3;
+  if (n == 2 || sf(1) <= kCollinear * sf(0) || st(1) <= kCollinear * st(0)) return LineRule(f, t);
+
+  // Umeyama (1991): least-squares similarity, proper rotation.
+  const Eigen::Matrix4d m = Eigen::umeyama(f, t, true);
+  const Eigen::Matrix3d sr = m.topLeftCorner<3, 3>();
+  s.scale = std::cbrt(sr.determinant());
+  s.rotation = sr / s.scale;
+  s.translation = m.topRightCorner<3, 1>();
+  return s;
+}
+
+// Applies s to m in place.
+//   m:  mesh; live vertex positions become s(p), vertex and face normals are rotated
+//       (their lengths are kept), and the bounding box is recomputed
+//   s:  the similarity (a proper rotation, so orientation is kept)
+void Transform(Mesh &m, const Similarity &s) {
+  for (auto &v : m.vert) {
+    if (v.IsD()) continue;
+    v.P() = s.Apply(v.P());
+    v.N() = ToPoint(s.rotation * ToEigen(v.N()));
+  }
+  for (auto &f : m.face)
+    if (!f.IsD()) f.N() = ToPoint(s.rotation * ToEigen(f.N()));
+  vcg::tri::UpdateBounding<Mesh>::Box(m);
+}
+
+} // namespace eulermap
