@@ -1,0 +1,128 @@
+#include "map_layers.h"
+
+#include "anchors.h"
+
+#include <QFileInfo>
+
+#include <new>
+
+namespace eulermap::plugin {
+
+namespace {
+
+constexpr int kMinGrid = 8, kMaxGrid = 4096;
+
+bool CheckMesh(const InputLayer &layer, const char *role, QString &error) {
+  if (layer.mesh.FN() == 0) {
+    error = QString("the %1 layer '%2' has no faces (%3 vertices): the map needs triangle meshes; "
+                    "pick another layer or rebuild a surface from the points first")
+                .arg(role, layer.label).arg(layer.mesh.VN());
+    return false;
+  }
+  if (!(layer.mesh.bbox.Diag() > 0)) {
+    error = QString("the %1 layer '%2' is degenerate (its bounding box has no extent)").arg(role, layer.label);
+    return false;
+  }
+  return true;
+}
+
+bool CheckOptions(const Options &o, QString &error) {
+  if (o.gridResolution < kMinGrid || o.gridResolution > kMaxGrid)
+    error = QString("grid_resolution %1 is out of range: give %2 to %3 cells on the longest axis (64 suits "
+                    "most meshes)")
+                .arg(o.gridResolution).arg(kMinGrid).arg(kMaxGrid);
+  else if (o.steps < 1)
+    error = QString("steps %1: give at least 1 time step (40 suits most meshes)").arg(o.steps);
+  else if (!(o.alpha > 0))
+    error = QString("alpha %1: the smoothness weight must be positive (2 suits most meshes)").arg(o.alpha);
+  else if (!(o.holeRadius > 0))
+    error = QString("hole_radius %1: the radius must be positive, in grid cells (1 is the default)").arg(o.holeRadius);
+  return error.isEmpty();
+}
+
+QStringList Lines(const std::string &text) {
+  QStringList lines = QString::fromStdString(text).split('\n');
+  while (!lines.isEmpty() && lines.last().trimmed().isEmpty()) lines.removeLast();
+  return lines;
+}
+
+}  // namespace
+
+bool CheckLayerChoice(const Request &request, int layers, QString &error) {
+  if (layers < 2 || request.targetLayer < 0) {
+    error = "no target mesh: load the surface to map onto as another layer and choose it as target_mesh";
+    return false;
+  }
+  if (request.sourceLayer < 0 || request.sourceLayer >= layers || request.targetLayer >= layers) {
+    error = QString("layer %1 does not exist (the document has layers 0..%2)")
+                .arg(request.sourceLayer < 0 || request.sourceLayer >= layers ? request.sourceLayer : request.targetLayer)
+                .arg(layers - 1);
+    return false;
+  }
+  if (request.sourceLayer == request.targetLayer) {
+    error = "target_mesh is the source mesh itself: choose another layer as target_mesh (the surface to "
+            "map onto)";
+    return false;
+  }
+  return true;
+}
+
+bool MapLayers(const Request &request, InputLayer &source, InputLayer &target, const ProgressFn &progress,
+               Result &result, QStringList &log, QString &error) {
+  if (!CheckMesh(source, "source", error) || !CheckMesh(target, "target", error)) return false;
+  if (!CheckOptions(request.options, error)) return false;
+
+  log << QString("Eulerian Surface Map: '%1' (%2 vertices, %3 faces) -> '%4' (%5 vertices, %6 faces)")
+             .arg(source.label).arg(source.mesh.VN()).arg(source.mesh.FN())
+             .arg(target.label).arg(target.mesh.VN()).arg(target.mesh.FN());
+
+  std::vector<AnchorPair> anchors;
+  AnchorSettings settings;
+  settings.sourceFile = request.sourceAnchors;
+  settings.targetFile = request.targetAnchors;
+  settings.pairs = request.anchorPairs;
+  QStringList notes;
+  if (!ResolveAnchors(settings, {source.label, source.fileName, &source.mesh},
+                      {target.label, target.fileName, &target.mesh}, anchors, notes, error))
+    return false;
+  log << notes;
+
+  const int span = kProgressCoreEnd - kProgressCoreBegin;
+  const Progress coreProgress = [&](double share, const std::string &stage) {
+    const double s = share < 0 ? 0 : share > 1 ? 1 : share;
+    return progress ? progress(kProgressCoreBegin + int(s * span), QString::fromStdString(stage)) : true;
+  };
+  try {
+    ComputeMap(source.mesh, target.mesh, anchors, request.options, result, coreProgress);
+  } catch (const Error &e) {
+    error = QString::fromStdString(e.what());
+    return false;
+  } catch (const std::bad_alloc &) {
+    error = QString("out of memory at grid_resolution %1: lower grid_resolution (memory grows with its cube)")
+                .arg(request.options.gridResolution);
+    return false;
+  } catch (const std::exception &e) {
+    error = QString("internal error in the map: %1").arg(e.what());
+    return false;
+  }
+  log << Lines(result.report.ToText());
+  return true;
+}
+
+QString OutputLabel(const QString &sourceLabel, const char *suffix) {
+  const QString base = QFileInfo(sourceLabel).completeBaseName();
+  return (base.isEmpty() ? sourceLabel : base) + "_" + suffix;
+}
+
+LayerComponents OutputComponents(const Request &request, const InputLayer &source, const InputLayer &target) {
+  LayerComponents out;
+  const bool targetHasTexture = target.has.wedgeTexCoords || target.has.vertexTexCoords;
+  out.wedgeTexCoords = (request.options.transferTexture && targetHasTexture) || source.has.wedgeTexCoords;
+  return out;
+}
+
+QString LayerLine(const QString &label, const Mesh &mesh) {
+  return QString("new layer %1: %2 vertices, %3 faces").arg(label).arg(mesh.VN()).arg(mesh.FN());
+}
+
+}  // namespace eulermap::plugin

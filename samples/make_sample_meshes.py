@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Writes the sample meshes (ASCII PLY) beside this script.
+
+Analytic ones:
+
+  sphere.ply  unit icosphere (icosahedron subdivided 4 times, 2562 vertices), centre 0
+  torus.ply   torus around z, ring radius 1, tube radius 0.4, 64 x 32 quads split in
+              triangles (2048 vertices); per-wedge texture coordinates (ring, tube angle
+              / 2 pi, seamless) and the texture torus_checker.png (made with ImageMagick
+              when it is there)
+
+Same shapes as tests/support/meshes.cpp (MakeSphere, MakeTorus).
+
+From the project's shared data (../shared/data/meshes):
+  spot.ply, rocker-arm.ply  converted from the .obj files (obj_to_ply.py: Debian's
+                            MeshLab 2020.09 aborts on .obj), same vertex order, spot
+                            with its per-wedge texture coordinates
+  cow.off                   copied as it is
+
+Usage: python3 samples/make_sample_meshes.py
+"""
+import math
+import os
+import shutil
+import subprocess
+
+import obj_to_ply
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SHARED = os.path.join(HERE, "..", "..", "shared", "data", "meshes")
+
+
+def icosphere(subdivisions):
+    t = (1 + 5 ** 0.5) / 2
+    verts = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+             (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+             (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+             (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    verts = [normalize(v) for v in verts]
+    for _ in range(subdivisions):
+        middle = {}
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                middle[key] = len(verts)
+                verts.append(normalize(tuple((verts[a][k] + verts[b][k]) / 2 for k in range(3))))
+            return middle[key]
+
+        new = []
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            new += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = new
+    return verts, faces
+
+
+def normalize(v):
+    n = math.sqrt(sum(x * x for x in v))
+    return tuple(x / n for x in v)
+
+
+def torus(R, r, ring, tube):
+    verts, faces, wedges = [], [], []
+    for i in range(ring):
+        for j in range(tube):
+            u, v = 2 * math.pi * i / ring, 2 * math.pi * j / tube
+            verts.append(((R + r * math.cos(v)) * math.cos(u), (R + r * math.cos(v)) * math.sin(u), r * math.sin(v)))
+    for i in range(ring):
+        for j in range(tube):
+            a, b = i * tube + j, ((i + 1) % ring) * tube + j
+            c, d = ((i + 1) % ring) * tube + (j + 1) % tube, i * tube + (j + 1) % tube
+            ta, tb = (i / ring, j / tube), ((i + 1) / ring, j / tube)
+            tc, td = ((i + 1) / ring, (j + 1) / tube), (i / ring, (j + 1) / tube)
+            faces += [(a, b, c), (a, c, d)]
+            wedges += [(ta, tb, tc), (ta, tc, td)]
+    return verts, faces, wedges
+
+
+def write_ply(path, verts, faces, wedges=None, texture=None):
+    with open(path, "w") as f:
+        f.write("ply\nformat ascii 1.0\n")
+        if texture:
+            f.write("comment TextureFile %s\n" % texture)
+        f.write("element vertex %d\nproperty float x\nproperty float y\nproperty float z\n" % len(verts))
+        f.write("element face %d\nproperty list uchar int vertex_indices\n" % len(faces))
+        if wedges:
+            f.write("property list uchar float texcoord\n")
+        f.write("end_header\n")
+        for v in verts:
+            f.write("%.7g %.7g %.7g\n" % v)
+        for n, face in enumerate(faces):
+            line = "3 %d %d %d" % face
+            if wedges:
+                line += " 6 " + " ".join("%.7g %.7g" % uv for uv in wedges[n])
+            f.write(line + "\n")
+
+
+def main():
+    v, f = icosphere(4)
+    write_ply(os.path.join(HERE, "sphere.ply"), v, f)
+    texture = "torus_checker.png"
+    if shutil.which("convert") and not os.path.exists(os.path.join(HERE, texture)):
+        # 8 x 8 blue and white squares
+        subprocess.run(["convert", "-size", "64x64", "xc:white", "-fill", "#3070c0", "-draw", "rectangle 0,0 31,31",
+                        "-draw", "rectangle 32,32 63,63", "-write", "mpr:tile", "+delete", "-size", "256x256",
+                        "tile:mpr:tile", "-strip", os.path.join(HERE, texture)], check=True)
+    v, f, w = torus(1.0, 0.4, 64, 32)
+    write_ply(os.path.join(HERE, "torus.ply"), v, f, w, texture)
+    if os.path.isdir(SHARED):
+        for name in ("spot", "rocker-arm"):
+            obj_to_ply.convert(os.path.join(SHARED, name + ".obj"), os.path.join(HERE, name + ".ply"))
+        shutil.copyfile(os.path.join(SHARED, "cow.off"), os.path.join(HERE, "cow.off"))
+    else:
+        print("no %s: spot, rocker-arm and cow left as they are" % SHARED)
+
+
+if __name__ == "__main__":
+    main()

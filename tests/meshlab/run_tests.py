@@ -1,0 +1,388 @@
+#!/usr/bin/env python3
+"""MeshLab 2020.09 integration tests of the Eulerian Surface Map plugin (issue 4).
+
+Run from anywhere, after building and installing the plugin (as root):
+    cmake --build build --target filter_eulermap && cmake --install build
+    python3 tests/meshlab/run_tests.py [-k SUBSTRING] [--keep]
+
+What it checks, through Debian's meshlab / meshlabserver under Xvfb:
+  - the installed plugin is the one in build/ and meshlabserver lists the filter with a
+    help text on every parameter; the sample .mlx scripts give every parameter;
+  - each sample script (samples/*.mlx): the cut layer's components, boundary loops and
+    Euler characteristic, >= 99% of the mapped vertices within 0.5% of the target's
+    bounding-box diagonal from the target, cut and mapped with the same vertices and faces,
+    the report in the log, and the input files unchanged (checksums);
+  - samples/map_meshes.sh writes cut.ply, mapped.ply and report.txt;
+  - every bad input fails the filter with its message, without a crash;
+  - the GUI: meshlab loads the plugin, and (with xdotool) the filter is run from
+    Filters > Remeshing; screenshots go to out/screenshots/.
+Outputs go to out/meshlab/ (kept). Prints one line per test and, last,
+'N passed, N failed'; exits 1 when any failed.
+"""
+import argparse
+import glob
+import hashlib
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import traceback
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import meshes  # noqa: E402
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+SAMPLES = os.path.join(ROOT, "samples")
+OUT = os.path.join(ROOT, "out", "meshlab")
+SHOTS = os.path.join(ROOT, "out", "screenshots")
+PLUGIN = "/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_eulermap.so"
+BUILT = os.path.join(ROOT, "build", "filter_eulermap", "libfilter_eulermap.so")
+FILTER = "Eulerian Surface Map"
+FAILED_PREFIX = FILTER + " failed: "
+CRASH_CODES = {134, 136, 139, -6, -8, -11}  # abort, FPE, segfault (as exit codes or signals)
+
+# (name, source, target, expected cut topology, extra checks)
+SAMPLE_RUNS = [
+    ("sphere_to_torus", "sphere.ply", "torus.ply", dict(components=1, loops=2, chi=0, texture="torus_checker.png")),
+    ("torus_to_sphere", "torus.ply", "sphere.ply", dict(components=1, loops=2, chi=0, filled=True)),
+    ("spot_to_cow", "spot.ply", "cow.off", dict(components=1, loops=0, chi=2, anchors=8)),
+    ("rocker-arm_to_sphere", "rocker-arm.ply", "sphere.ply", dict(components=1, loops=2, chi=0)),
+]
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+def sha256(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def sample_checksums():
+    return {p: sha256(p) for p in sorted(glob.glob(os.path.join(SAMPLES, "*"))) if os.path.isfile(p)}
+
+
+def plugin_parameter_names():
+    """The parameter names, in order, from filter_eulermap/parameters.h."""
+    text = open(os.path.join(ROOT, "filter_eulermap", "parameters.h")).read()
+    return re.findall(r'inline const char \*const k\w+ = "(\w+)";', text)
+
+
+def mlx_text(**values):
+    """A complete script for the filter; `values` override the sample defaults."""
+    v = dict(source_mesh=0, target_mesh=1, grid_resolution=64, steps=40, alpha=2, hole_radius=1, align=1,
+             source_anchors="", target_anchors="", anchor_pairs="", fill_holes=False, transfer_texture=True)
+    v.update(values)
+    b = lambda x: "true" if x else "false"  # noqa: E731
+    return f"""<!DOCTYPE FilterScript>
+<FilterScript>
+ <filter name="{FILTER}">
+  <Param type="RichMesh" name="source_mesh" value="{v['source_mesh']}"/>
+  <Param type="RichMesh" name="target_mesh" value="{v['target_mesh']}"/>
+  <Param type="RichInt" name="grid_resolution" value="{v['grid_resolution']}"/>
+  <Param type="RichInt" name="steps" value="{v['steps']}"/>
+  <Param type="RichFloat" name="alpha" value="{v['alpha']}"/>
+  <Param type="RichFloat" name="hole_radius" value="{v['hole_radius']}"/>
+  <Param type="RichEnum" name="align" value="{v['align']}" enum_cardinality="2" enum_val0="none" enum_val1="centre-and-scale"/>
+  <Param type="RichOpenFile" name="source_anchors" value="{v['source_anchors']}" exts_cardinality="1" exts_val0="*.pp"/>
+  <Param type="RichOpenFile" name="target_anchors" value="{v['target_anchors']}" exts_cardinality="1" exts_val0="*.pp"/>
+  <Param type="RichString" name="anchor_pairs" value="{v['anchor_pairs']}"/>
+  <Param type="RichBool" name="fill_holes" value="{b(v['fill_holes'])}"/>
+  <Param type="RichBool" name="transfer_texture" value="{b(v['transfer_texture'])}"/>
+ </filter>
+</FilterScript>
+"""
+
+
+def meshlabserver(outdir, inputs, script, saves=(), timeout=1800):
+    """Runs meshlabserver under xvfb-run; `saves` are (file, layer) pairs, written with
+    vertex quality and wedge texture coordinates. Returns (exit status, log text)."""
+    os.makedirs(outdir, exist_ok=True)
+    log = os.path.join(outdir, "meshlabserver.log")
+    if os.path.exists(log):
+        os.remove(log)
+    cmd = ["xvfb-run", "-a", "meshlabserver", "-l", log, "-i"] + list(inputs) + ["-s", script]
+    for path, layer in saves:
+        cmd += ["-o", path, "-l", str(layer), "-m", "vq", "wt"]
+    with open(os.path.join(outdir, "meshlabserver.out"), "w") as out:
+        p = subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT, timeout=timeout)
+    text = open(log, errors="replace").read() if os.path.exists(log) else ""
+    return p.returncode, text
+
+
+# ---------------------------------------------------------------- the tests
+
+
+def build_id(path):
+    """The ELF build ID (cmake --install rewrites the RPATH, so the bytes differ)."""
+    out = subprocess.run(["readelf", "-n", path], capture_output=True, text=True).stdout
+    m = re.search(r"Build ID: (\w+)", out)
+    return m.group(1) if m else sha256(path)
+
+
+def test_plugin_installed():
+    check(os.path.isfile(PLUGIN), f"{PLUGIN} missing: build and install the plugin (cmake --install build)")
+    if os.path.isfile(BUILT):
+        check(build_id(BUILT) == build_id(PLUGIN), f"{PLUGIN} is not the plugin in {BUILT}: run cmake --install build")
+
+
+def test_meshlabserver_lists_filter():
+    dump = os.path.join(OUT, "filters.txt")
+    os.makedirs(OUT, exist_ok=True)
+    p = subprocess.run(["xvfb-run", "-a", "meshlabserver", "-d", dump], capture_output=True, text=True, timeout=300)
+    check(p.returncode == 0 and os.path.isfile(dump), f"meshlabserver -d failed ({p.returncode}): {p.stdout[-500:]}")
+    text = open(dump, errors="replace").read()
+    m = re.search(r"\\section \w+ " + re.escape(FILTER) + r"\s*\n(.*?)(?=\\section|\Z)", text, re.S)
+    check(m, f"'{FILTER}' not in meshlabserver's filter list ({dump})")
+    body = m.group(1)
+    check("An Eulerian approach for constructing a map between surfaces" in body, "description does not cite the paper")
+    rows = re.findall(r"<TR><TD> \\c (\w+)\s*</TD> <TD> (.*?) </TD> <TD><i> (.*?) -- </i></TD> </TR>", body)
+    names = plugin_parameter_names()
+    check(len(rows) == len(names), f"{len(rows)} parameters listed, {len(names)} declared in parameters.h")
+    for kind, label, help_text in rows:
+        check(len(help_text) > 40, f"parameter '{label}' has no real help text: '{help_text}'")
+
+
+def test_sample_scripts_complete():
+    names = plugin_parameter_names()
+    check(len(names) == 12, f"expected the 12 parameters of issue 4 (with source_mesh), found {names}")
+    scripts = sorted(glob.glob(os.path.join(SAMPLES, "*.mlx")))
+    check(len(scripts) >= 4, f"expected the 4 sample scripts, found {scripts}")
+    for s in scripts:
+        given = re.findall(r'<Param [^>]*name="(\w+)"', open(s).read())
+        check(given == names, f"{os.path.basename(s)} gives {given}, the filter declares {names} (all, in order)")
+        for p in re.findall(r"<Param [^>]*>", open(s).read()):
+            if 'type="RichAbsPerc"' in p:
+                check("min=" in p and "max=" in p, f"{os.path.basename(s)}: RichAbsPerc without min/max")
+
+
+def make_sample_test(name, source, target, expect):
+    def run():
+        outdir = os.path.join(OUT, name)
+        shutil.rmtree(outdir, ignore_errors=True)
+        before = sample_checksums()
+        cut, mapped, filled = (os.path.join(outdir, f) for f in ("cut.ply", "mapped.ply", "filled.ply"))
+        saves = [(cut, 2), (mapped, 3)] + ([(filled, 4)] if expect.get("filled") else [])
+        t0 = time.time()
+        rc, log = meshlabserver(outdir, [os.path.join(SAMPLES, source), os.path.join(SAMPLES, target)],
+                                os.path.join(SAMPLES, name + ".mlx"), saves)
+        seconds = time.time() - t0
+        report = filter_log(log)
+        with open(os.path.join(outdir, "report.txt"), "w") as f:
+            f.write("\n".join(report) + "\n")
+        check(sample_checksums() == before, "the run changed files in samples/")
+        check(rc not in CRASH_CODES, f"meshlabserver crashed (exit {rc}); see {outdir}/meshlabserver.out")
+        check(rc == 0, f"meshlabserver failed (exit {rc}): {failure_message(log)}")
+        base = os.path.splitext(source)[0]
+        for line in ("Eulerian Surface Map: ", "grid: ", "times (s): ", "map quality: ", f"new layer {base}_cut: ",
+                     f"new layer {base}_mapped: "):
+            check(any(l.startswith(line) for l in report), f"the log lacks a '{line}...' line")
+        if "anchors" in expect:
+            check(any(l.startswith(f"anchors: {expect['anchors']} named pairs") for l in report),
+                  f"the log does not report {expect['anchors']} named anchor pairs")
+        c, m = meshes.read_mesh(cut), meshes.read_mesh(mapped)
+        check(len(c.verts) == len(m.verts) and c.faces == m.faces,
+              f"cut ({len(c.verts)} v) and mapped ({len(m.verts)} v) differ in vertices or faces")
+        check("quality" in c.vertex, "the cut layer has no vertex quality")
+        if "texture" in expect:
+            check("texcoord" in c.face_props, "the cut layer has no wedge texture coordinates")
+            check(f"TextureFile {expect['texture']}" in c.comments, f"the cut layer does not name {expect['texture']}")
+        tgt = meshes.read_mesh(os.path.join(SAMPLES, target))
+        tol = 0.005 * meshes.diagonal(tgt.verts)
+        rate = meshes.on_surface_rate(m.verts, tgt, tol)
+        topo = meshes.topology(c)
+        note(f"{name}: {seconds:.0f} s; cut {len(c.verts)} v {len(c.faces)} f, components/loops/chi {topo}; "
+             f"mapped on target {100 * rate:.2f}%")
+        check(rate >= 0.99, f"only {100 * rate:.2f}% of the mapped vertices lie within 0.5% of the diagonal of the target")
+        want = (expect["components"], expect["loops"], expect["chi"])
+        check(topo == want, f"cut layer: components, boundary loops, Euler characteristic {topo}, expected {want}")
+        if expect.get("filled"):
+            f = meshes.read_mesh(filled)
+            ftopo = meshes.topology(f)
+            check(ftopo[1] == 0, f"the filled layer still has {ftopo[1]} boundary loops")
+    return run
+
+
+def filter_log(log):
+    """The filter's lines in meshlabserver's log."""
+    lines, on = [], False
+    for line in log.splitlines():
+        if line.endswith("filter: " + FILTER):
+            on = True
+            continue
+        if on and re.match(r"(Mesh .* saved as|Output mesh|Problem with filter|Failed to apply|Invalid layer)", line):
+            break
+        if on:
+            lines.append(line)
+    return lines
+
+
+def failure_message(log):
+    for line in log.splitlines():
+        if line.startswith(FAILED_PREFIX):
+            return line[len(FAILED_PREFIX):]
+    return "(no message from the filter)" + log[-300:]
+
+
+def test_map_meshes_script():
+    outdir = os.path.join(OUT, "map_meshes")
+    shutil.rmtree(outdir, ignore_errors=True)
+    p = subprocess.run([os.path.join(SAMPLES, "map_meshes.sh"), os.path.join(SAMPLES, "torus.ply"),
+                        os.path.join(SAMPLES, "sphere.ply"), outdir, "--grid", "24", "--steps", "8"],
+                       capture_output=True, text=True, timeout=600)
+    check(p.returncode == 0, f"map_meshes.sh failed ({p.returncode}): {p.stderr[-500:]}")
+    for f in ("cut.ply", "mapped.ply", "report.txt"):
+        check(os.path.getsize(os.path.join(outdir, f)) > 0, f"map_meshes.sh wrote no {f}")
+    report = open(os.path.join(outdir, "report.txt")).read()
+    check(re.search(r"grid: \d+ x \d+ x \d+ nodes", report), "report.txt has no grid line")
+    check("steps: 8" in report, "report.txt does not show --steps 8")
+    c, m = meshes.read_mesh(os.path.join(outdir, "cut.ply")), meshes.read_mesh(os.path.join(outdir, "mapped.ply"))
+    check(len(c.verts) == len(m.verts) and c.faces == m.faces, "cut.ply and mapped.ply differ in vertex order or faces")
+    check(len(c.verts) == 2048, f"cut.ply has {len(c.verts)} vertices, the torus 2048")
+
+
+# Bad inputs: (name, inputs, script values, expected message part). Small grids, so a
+# wrongly accepted input still ends quickly.
+def _write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def _pp(path, points):
+    body = "".join(f' <point x="{x}" y="{y}" z="{z}" active="1" name="{n}"/>\n' for n, (x, y, z) in points)
+    return _write(path, "<!DOCTYPE PickedPoints>\n<PickedPoints>\n" + body + "</PickedPoints>\n")
+
+
+def bad_inputs(tmp):
+    sphere, torus = os.path.join(SAMPLES, "sphere.ply"), os.path.join(SAMPLES, "torus.ply")
+    points_only = _write(os.path.join(tmp, "points.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nelement face 0\nproperty list uchar int vertex_indices\n"
+                         "end_header\n0 0 0\n1 0 0\n0 1 0\n")
+    on_sphere = [("north", (0, 0, 1)), ("south", (0, 0, -1)), ("east", (1, 0, 0))]
+    on_torus = [("north", (0, 0, 0.4)), ("south", (0, 0, -0.4)), ("east", (1.4, 0, 0))]
+    a = _pp(os.path.join(tmp, "a.pp"), on_sphere)
+    b_renamed = _pp(os.path.join(tmp, "b_renamed.pp"), on_torus[:2] + [("west", (-1.4, 0, 0))])
+    b_far = _pp(os.path.join(tmp, "b_far.pp"), on_torus[:2] + [("east", (5, 5, 5))])
+    small = dict(grid_resolution=16, steps=2)
+    return [
+        ("no_target", [sphere], dict(small, target_mesh=0), "no target mesh"),
+        ("target_is_source", [sphere, torus], dict(small, target_mesh=0), "target_mesh is the source mesh itself"),
+        ("empty_source", [points_only, torus], small, "has no faces"),
+        ("empty_target", [sphere, points_only], small, "has no faces"),
+        ("anchor_names_differ", [sphere, torus], dict(small, source_anchors=a, target_anchors=b_renamed),
+         "anchor names do not match"),
+        ("anchor_far_from_mesh", [sphere, torus], dict(small, source_anchors=a, target_anchors=b_far),
+         "anchor 'east' in b_far.pp lies"),
+        ("anchor_file_missing", [sphere, torus], dict(small, source_anchors=os.path.join(tmp, "none.pp"),
+                                                      target_anchors=b_far), "cannot open"),
+        ("anchor_pairs_malformed", [sphere, torus], dict(small, anchor_pairs="12-305"), "is not a pair of vertex indices"),
+        ("anchor_pairs_out_of_range", [sphere, torus], dict(small, anchor_pairs="0:99999"), "is out of range"),
+        ("anchors_given_twice", [sphere, torus], dict(small, anchor_pairs="0:0", source_anchors=a), "anchors given twice"),
+        ("grid_out_of_range", [sphere, torus], dict(small, grid_resolution=2), "grid_resolution 2 is out of range"),
+        ("grid_too_large_for_memory", [sphere, torus], dict(small, grid_resolution=2000), "lower grid_resolution"),
+    ]
+
+
+def make_bad_input_test(name, inputs, values, expected, tmp):
+    def run():
+        outdir = os.path.join(OUT, "bad_" + name)
+        shutil.rmtree(outdir, ignore_errors=True)
+        script = _write(os.path.join(tmp, name + ".mlx"), mlx_text(**values))
+        rc, log = meshlabserver(outdir, inputs, script, timeout=300)
+        check(rc not in CRASH_CODES and "Assertion" not in open(os.path.join(outdir, "meshlabserver.out")).read(),
+              f"meshlabserver crashed (exit {rc})")
+        message = failure_message(log)
+        check(rc == 255, f"expected the filter to fail (meshlabserver exit 255), got exit {rc}")
+        check(expected in message, f"message '{message}' does not say '{expected}'")
+        note(f"bad input {name}: {message}")
+    return run
+
+
+def test_gui():
+    """meshlab under Xvfb: the plugin is loaded into the process; with xdotool, the filter
+    is run from Filters > Remeshing (torus -> sphere, grid 24, 8 steps) and the layers it
+    makes appear; screenshots in out/screenshots/."""
+    os.makedirs(SHOTS, exist_ok=True)
+    for old in glob.glob(os.path.join(SHOTS, "meshlab_*.png")):
+        os.remove(old)
+    outdir = os.path.join(OUT, "gui")
+    os.makedirs(outdir, exist_ok=True)
+    have_xdotool = shutil.which("xdotool") is not None
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_session.sh")
+    p = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x960x24", "bash", script, SAMPLES, SHOTS, outdir,
+                        "1" if have_xdotool else "0"], capture_output=True, text=True, timeout=600)
+    log = open(os.path.join(outdir, "meshlab.out"), errors="replace").read()
+    check(p.returncode == 0, f"GUI session failed ({p.returncode}): {(p.stdout + p.stderr)[-600:]}")
+    check("PLUGIN_LOADED" in p.stdout, "meshlab did not load libfilter_eulermap.so (not in /proc/PID/maps)")
+    shots = sorted(glob.glob(os.path.join(SHOTS, "meshlab_*.png")))
+    check(shots, "no screenshot written")
+    if not have_xdotool:
+        note("GUI: plugin loaded; xdotool missing, so the Filters menu was not driven (apt-get install xdotool)")
+        return
+    check("new layer torus_cut" in log and "new layer torus_mapped" in log,
+          "the filter run from Filters > Remeshing > Eulerian Surface Map made no layers; see the screenshots")
+    check("ALIVE_AFTER_FILTER" in p.stdout, "meshlab did not survive the filter run")
+    note("GUI: screenshots " + ", ".join(os.path.relpath(s, ROOT) for s in shots))
+
+
+def test_inputs_unchanged():
+    check(sample_checksums() == INITIAL_CHECKSUMS, "files in samples/ changed during the tests")
+
+
+# ---------------------------------------------------------------- the runner
+
+NOTES = []
+
+
+def note(text):
+    NOTES.append(text)
+    print("    " + text, flush=True)
+
+
+INITIAL_CHECKSUMS = {}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("-k", default="", help="run only the tests whose name contains this")
+    args = parser.parse_args()
+    INITIAL_CHECKSUMS.update(sample_checksums())
+    tmp = tempfile.mkdtemp(prefix="eulermap-meshlab-")
+    tests = [("plugin_installed", test_plugin_installed), ("meshlabserver_lists_filter", test_meshlabserver_lists_filter),
+             ("sample_scripts_complete", test_sample_scripts_complete)]
+    tests += [("sample_" + n, make_sample_test(n, s, t, e)) for n, s, t, e in SAMPLE_RUNS]
+    tests += [("map_meshes_script", test_map_meshes_script)]
+    tests += [("bad_input_" + n, make_bad_input_test(n, i, v, e, tmp)) for n, i, v, e in bad_inputs(tmp)]
+    tests += [("gui", test_gui), ("inputs_unchanged", test_inputs_unchanged)]
+    passed = failed = 0
+    for name, fn in tests:
+        if args.k not in name:
+            continue
+        t0 = time.time()
+        try:
+            fn()
+            passed += 1
+            print(f"PASS {name} ({time.time() - t0:.1f} s)", flush=True)
+        except Failure as e:
+            failed += 1
+            print(f"FAIL {name}: {e}", flush=True)
+        except Exception:  # a bug in the test itself, or a missing tool
+            failed += 1
+            print(f"FAIL {name}: error\n{traceback.format_exc()}", flush=True)
+    shutil.rmtree(tmp, ignore_errors=True)
+    print(f"{passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
