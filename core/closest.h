@@ -1,10 +1,13 @@
-// eulermap::ClosestPoint — nearest point on a triangle mesh, through vcglib's
-// GridStaticPtr and tri::GetClosestFaceBase (DESIGN.md: use what vcglib has).
+// eulermap::ClosestPoint — nearest point on a triangle mesh: a bounding-volume tree over
+// the faces, with vcglib's point–triangle distance (face::PointDistanceBase) at the
+// leaves. Not vcglib's GridStaticPtr / tri::GetClosestFaceBase: those mark faces in the
+// mesh (not thread-safe) and cost O((distance/voxel)^4) far from the surface, which is
+// where most SDF grid nodes are (closest.cpp has the figures).
 #pragma once
 
 #include "mesh.h"
 
-#include <vcg/space/index/grid_static_ptr.h>
+#include <memory>
 
 namespace eulermap {
 
@@ -24,8 +27,9 @@ class ClosestPoint {
   ClosestHit Query(const Point3 &p, double maxDist = -1) const;
 
  private:
+  struct Tree;
   Mesh &mesh_;
-  vcg::GridStaticPtr<Face, double> index_;
+  std::shared_ptr<const Tree> tree_;
 };
 
 } // namespace eulermap

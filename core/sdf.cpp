@@ -1,1 +1,273 @@
-// (in progress)
+// Signed distance fields on grid nodes, with the inside decided by the generalized
+// winding number (DESIGN.md: sdf.h).
+//
+// References
+//   [J13] A. Jacobson, L. Kavan, O. Sorkine-Hornung, "Robust inside-outside segmentation
+//         using generalized winding numbers", ACM TOG 32(4), 2013.
+//   [VS83] A. Van Oosterom, J. Strackee, "The solid angle of a plane triangle",
+//         IEEE Trans. Biomed. Eng. 30(2), 1983.
+//   [B18] G. Barill, N. Dickson, R. Schmidt, D. I. W. Levin, A. Jacobson, "Fast winding
+//         numbers for soups and clouds", ACM TOG 37(4), 2018.
+//
+// The winding number w(p) = (1/4pi) sum_t Omega_t(p) [J13], with Omega_t the signed solid
+// angle of triangle t seen from p [VS83]. It is 1 inside and 0 outside a closed,
+// outward-oriented surface and degrades gracefully across holes (camelhead's open neck),
+// so thresholding it at 1/2 gives an inside for open meshes too [J13].
+//
+// [B18] evaluates the sum over a bounding-volume tree: the triangles of a node seen from
+// far away are replaced by the Taylor series of the dipole kernel g(y) = y / |y|^3 about
+// their area-weighted centroid c. With y = c - p, r = |y|, a_t n_t the area-weighted
+// normal of triangle t and d = x - c for x on it,
+//   4pi w_node(p) ~ y.N / r^3                                                (order 1)
+//                 + tr(M) / r^3 - 3 y.(M y) / r^5                            (order 2)
+//                 + 15/2 T[y,y,y] / r^7 - 3/2 (2u + v).y / r^5               (order 3)
+//   N = sum_t a_t n_t,  M = sum_t a_t d_t n_t^T (d_t at the triangle's centroid),
+//   T_ijk = sum_t n_ti int_t d_j d_k dA,  u_k = sum_i T_iik,  v_i = sum_j T_ijj,
+// all exact integrals over the flat triangles. The expansion is used when r > beta * rho,
+// rho being the node's radius about c; nearer leaves are summed exactly.
+// [B18] suggests beta = 2. Measured against the exact sum at points in and around
+// bunny.off / camelhead.off (down to 1% of the diagonal from the surface), the largest
+// error was 3.8e-3 / 6.2e-3 with beta = 2 and 6.3e-4 / 9.6e-4 with beta = 3 (order 2
+// alone: 1.4e-2 at beta = 3); beta = 3 costs ~1.5-2x the evaluations of beta = 2, still
+// less than the closest-point queries of SignedDistance. Only the sign of w - 1/2
+// matters there, but the numbers are also meant to be read.
+#include "sdf.h"
+
+#include "closest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace eulermap {
+
+namespace {
+
+constexpr double kBeta = 3.0;        // far-field acceptance: |c - p| > kBeta * radius (see above)
+constexpr double kBetaSign = 2.0;     // enough to tell w from 1/2 (measured error <= 6.2e-3) ...
+constexpr double kSignMargin = 0.05;  // ... outside [1/2 - margin, 1/2 + margin]
+constexpr int kLeafSize = 8;    // triangles per leaf of the tree
+constexpr double kFourPi = 4 * M_PI;
+
+// Signed solid angle of triangle (a, b, c) seen from p, by the Van Oosterom–Strackee
+// formula [VS83]: tan(Omega/2) = det[A B C] / (|A||B||C| + (A.B)|C| + (B.C)|A| + (C.A)|B|),
+// A = a - p etc. atan2 keeps the right branch for |Omega| > pi.
+//   in:  triangle corners a, b, c (counter-clockwise seen from the side the normal
+//        (b-a)x(c-a) points to); query point p
+//   out: Omega in [-2pi, 2pi], positive when p is behind the triangle (on the side
+//        opposite its normal); 0 for p on the triangle's plane.
+inline double SolidAngle(const Point3 &a, const Point3 &b, const Point3 &c, const Point3 &p) {
+  const Point3 A = a - p, B = b - p, C = c - p;
+  const double la = A.Norm(), lb = B.Norm(), lc = C.Norm();
+  const double det = A.dot(B ^ C);
+  const double den = la * lb * lc + A.dot(B) * lc + B.dot(C) * la + C.dot(A) * lb;
+  return 2 * std::atan2(det, den);
+}
+
+} // namespace
+
+// A bounding-volume tree over the triangles, built by median splits of the triangle
+// centroids along the longest axis of their box. Nodes are stored depth-first: a node's
+// left child follows it, `right` indexes the right child (-1 for a leaf).
+struct WindingNumber::Tree {
+  struct Node {
+    Point3 centre;       // area-weighted centroid c of the node's triangles
+    double radius2 = 0;  // squared radius about c: the expansion is used beyond beta^2 radius2
+    Point3 normal;       // order 1: N = sum_t a_t n_t
+    double m[9] = {};    // order 2: M = sum_t a_t (x_t - c) n_t^T, row-major
+    double traceM = 0;
+    double t[18] = {};   // order 3: T_i = sum_t n_ti Q_t, i = 0..2, each symmetric (xx xy xz yy yz zz)
+    Point3 tContracted;  // order 3: 2 u + v, u_k = sum_i (T_i)_ik, v_i = trace(T_i)
+    int first = 0, count = 0;  // the node's triangles: corners[3*first .. 3*(first+count))
+    int right = -1;
+  };
+  std::vector<Point3> corners;  // 3 per triangle, in tree order
+  std::vector<Node> nodes;
+
+  // in:  triangle corners (3 per triangle)
+  // out: the tree; corners reordered so that every node's triangles are contiguous.
+  explicit Tree(std::vector<Point3> tris) {
+    const int n = int(tris.size() / 3);
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::vector<Point3> centroid(n);
+    for (int t = 0; t < n; ++t) centroid[t] = (tris[3 * t] + tris[3 * t + 1] + tris[3 * t + 2]) / 3.0;
+    if (n > 0) {
+      nodes.reserve(2 * (n / kLeafSize + 1));
+      Build(order, centroid, 0, n);
+    }
+    corners.resize(tris.size());
+    for (int t = 0; t < n; ++t)
+      for (int v = 0; v < 3; ++v) corners[3 * t + v] = tris[3 * order[t] + v];
+    for (Node &node : nodes) Summarize(node);
+  }
+
+  // Splits order[begin, end) recursively; returns the index of the node made for it.
+  int Build(std::vector<int> &order, const std::vector<Point3> &centroid, int begin, int end) {
+    const int id = int(nodes.size());
+    nodes.emplace_back();
+    nodes[id].first = begin;
+    nodes[id].count = end - begin;
+    if (end - begin <= kLeafSize) return id;
+    Box3 box;
+    for (int t = begin; t < end; ++t) box.Add(centroid[order[t]]);
+    const Point3 dim = box.Dim();
+    const int axis = dim[0] >= dim[1] ? (dim[0] >= dim[2] ? 0 : 2) : (dim[1] >= dim[2] ? 1 : 2);
+    const int mid = begin + (end - begin) / 2;
+    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                     [&](int a, int b) { return centroid[a][axis] < centroid[b][axis]; });
+    Build(order, centroid, begin, mid);
+    const int right = Build(order, centroid, mid, end);
+    nodes[id].right = right;
+    return id;
+  }
+
+  // Fills the node's expansion data (header comment) from its triangles (in tree order).
+  void Summarize(Node &node) const {
+    const Point3 *tri = corners.data() + 3 * node.first;
+    double area = 0;
+    Point3 centre(0, 0, 0), normal(0, 0, 0);
+    Box3 box;
+    for (int t = 0; t < node.count; ++t) {
+      const Point3 &a = tri[3 * t], &b = tri[3 * t + 1], &c = tri[3 * t + 2];
+      const Point3 an = ((b - a) ^ (c - a)) * 0.5;  // a_t n_t
+      const double at = an.Norm();
+      area += at;
+      centre += (a + b + c) * (at / 3.0);
+      normal += an;
+      box.Add(a);
+      box.Add(b);
+      box.Add(c);
+    }
+    centre = area > 0 ? centre / area : box.Center();  // all-degenerate: any point will do
+    double r2 = 0;
+    double m[9] = {}, t3[18] = {};
+    for (int t = 0; t < node.count; ++t) {
+      const Point3 &a = tri[3 * t], &b = tri[3 * t + 1], &c = tri[3 * t + 2];
+      const Point3 an = ((b - a) ^ (c - a)) * 0.5;
+      const Point3 pa = a - centre, pb = b - centre, pc = c - centre, s = pa + pb + pc;
+      const Point3 d = s / 3.0;  // x_t - c
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[3 * i + j] += d[i] * an[j];
+      // Q_t = int_t (x - c)(x - c)^T dA = a_t/12 (sum_v p_v p_v^T + s s^T), p_v = corner - c,
+      // s = sum_v p_v; so n_ti Q_t = an_i/12 (...).
+      static const int J[6] = {0, 0, 0, 1, 1, 2}, K[6] = {0, 1, 2, 1, 2, 2};
+      for (int e = 0; e < 6; ++e) {
+        const int j = J[e], k = K[e];
+        const double q = (pa[j] * pa[k] + pb[j] * pb[k] + pc[j] * pc[k] + s[j] * s[k]) / 12;
+        for (int i = 0; i < 3; ++i) t3[6 * i + e] += an[i] * q;
+      }
+      r2 = std::max({r2, pa.SquaredNorm(), pb.SquaredNorm(), pc.SquaredNorm()});
+    }
+    node.centre = centre;
+    node.normal = normal;
+    node.radius2 = r2;
+    std::copy(m, m + 9, node.m);
+    node.traceM = m[0] + m[4] + m[8];
+    std::copy(t3, t3 + 18, node.t);
+    // u_k = sum_i (T_i)_ik, v_i = trace(T_i); entry (i, k) of a packed symmetric matrix:
+    static const int P[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    for (int k = 0; k < 3; ++k) {
+      double u = 0;
+      for (int i = 0; i < 3; ++i) u += t3[6 * i + P[i][k]];
+      const double v = t3[6 * k + 0] + t3[6 * k + 3] + t3[6 * k + 5];
+      node.tContracted[k] = 2 * u + v;
+    }
+  }
+
+  // in:  query point p; beta — the far-field acceptance ratio
+  // out: 4pi * w(p): the sum of exact solid angles of near leaves and the third-order
+  //      expansion of far nodes [B18].
+  double SolidAngleSum(const Point3 &p, double beta) const {
+    const double beta2 = beta * beta;
+    if (nodes.empty()) return 0;
+    int stack[128];  // median splits: depth <= log2(#triangles) + 1
+    int top = 0;
+    stack[top++] = 0;
+    double sum = 0;
+    while (top > 0) {
+      const Node &node = nodes[stack[--top]];
+      const Point3 y = node.centre - p;
+      const double r2 = y.SquaredNorm();
+      if (r2 > beta2 * node.radius2) {
+        const double r = std::sqrt(r2), inv3 = 1 / (r2 * r), inv5 = inv3 / r2, inv7 = inv5 / r2;
+        const double *m = node.m;
+        const double yMy = y[0] * (m[0] * y[0] + m[1] * y[1] + m[2] * y[2]) +
+                           y[1] * (m[3] * y[0] + m[4] * y[1] + m[5] * y[2]) +
+                           y[2] * (m[6] * y[0] + m[7] * y[1] + m[8] * y[2]);
+        double yTy = 0;  // T[y, y, y] = sum_i y_i y^T T_i y
+        for (int i = 0; i < 3; ++i) {
+          const double *t = node.t + 6 * i;
+          yTy += y[i] * (t[0] * y[0] * y[0] + t[3] * y[1] * y[1] + t[5] * y[2] * y[2] +
+                         2 * (t[1] * y[0] * y[1] + t[2] * y[0] * y[2] + t[4] * y[1] * y[2]));
+        }
+        // 4pi times the order-1, -2 and -3 terms of the expansion (header comment).
+        sum += y.dot(node.normal) * inv3                            // order 1
+               + node.traceM * inv3 - 3 * yMy * inv5                // order 2
+               + 7.5 * yTy * inv7 - 1.5 * y.dot(node.tContracted) * inv5;  // order 3
+      } else if (node.right < 0) {
+        const Point3 *tri = corners.data() + 3 * node.first;
+        for (int t = 0; t < node.count; ++t) sum += SolidAngle(tri[3 * t], tri[3 * t + 1], tri[3 * t + 2], p);
+      } else {
+        stack[top++] = node.right;
+        stack[top++] = int(&node - nodes.data()) + 1;
+      }
+    }
+    return sum;
+  }
+};
+
+// in:  mesh — triangle mesh (any orientation convention: outward normals give w ~ 1
+//      inside); deleted faces are skipped. The mesh is copied, so it may change or go
+//      away afterwards.
+// out: the tree for hierarchical evaluation.
+WindingNumber::WindingNumber(const Mesh &mesh) {
+  std::vector<Point3> tris;
+  tris.reserve(3 * std::size_t(mesh.fn));
+  for (const Face &f : mesh.face) {
+    if (f.IsD()) continue;
+    for (int v = 0; v < 3; ++v) tris.push_back(f.cP(v));
+  }
+  tree_ = std::make_unique<Tree>(std::move(tris));
+}
+
+WindingNumber::~WindingNumber() = default;
+
+// in:  p — query point (thread-safe: reads the tree only)
+// out: the generalized winding number w(p) [J13]: ~1 inside, ~0 outside a closed outward-
+//      oriented mesh; far nodes are approximated [B18] (absolute error below ~1e-3).
+double WindingNumber::operator()(const Point3 &p) const { return tree_->SolidAngleSum(p, kBeta) / kFourPi; }
+
+// in:  p — query point
+// out: whether w(p) >= 1/2, from a cheaper evaluation (beta = 2, error <= 6.2e-3 measured) unless
+//      that lands within kSignMargin of 1/2, where the accurate one decides.
+bool WindingNumber::Inside(const Point3 &p) const {
+  const double w = tree_->SolidAngleSum(p, kBetaSign) / kFourPi;
+  if (std::abs(w - 0.5) > kSignMargin) return w > 0.5;
+  return (*this)(p) >= 0.5;
+}
+
+// in:  mesh — triangle mesh, closed or with holes (bounding box and face normals are
+//      updated, for the closest-point index); grid — the lattice
+// out: f(node) = +/- distance to the nearest surface point (ClosestPoint), negative where
+//      the generalized winding number is >= 1/2 (DESIGN.md: sdf.h). Nodes are evaluated
+//      in parallel (OpenMP).
+ScalarField SignedDistance(Mesh &mesh, const Grid &grid) {
+  ScalarField f(grid, 0.0);
+  const ClosestPoint closest(mesh);
+  const WindingNumber winding(mesh);
+  const std::int64_t count = std::int64_t(grid.NodeCount());
+  const std::int64_t nx = grid.dims.X(), nxy = nx * grid.dims.Y();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t n = 0; n < count; ++n) {
+    const int k = int(n / nxy), j = int((n % nxy) / nx), i = int(n % nx);
+    const Point3 p = grid.Node(i, j, k);
+    const double d = closest.Query(p).distance;  // 0 for an empty mesh
+    f.values[n] = winding.Inside(p) ? -d : d;
+  }
+  return f;
+}
+
+} // namespace eulermap

@@ -2,8 +2,8 @@
 //
 // SignedDistance(mesh, grid)
 //   in:  a triangle mesh (closed, or with small holes) and the grid
-//   out: per node, the distance to the nearest surface point (vcglib closest-point
-//        search), negative inside. Inside means generalized winding number >= 1/2,
+//   out: per node, the distance to the nearest surface point (ClosestPoint, closest.h),
+//        negative inside. Inside means generalized winding number >= 1/2,
 //        so a mesh with a hole (camelhead.off) still has a sensible inside.
 // WindingNumber: the generalized winding number of Jacobson et al. 2013, evaluated
 //   hierarchically (far triangle clusters as dipoles, Barill et al. 2018).
@@ -22,6 +22,8 @@ class WindingNumber {
   ~WindingNumber();
   // Winding number at p: about 1 inside a closed outward-oriented mesh, 0 outside.
   double operator()(const Point3 &p) const;
+  // Whether operator()(p) >= 1/2, decided with a cheaper evaluation where it is clear.
+  bool Inside(const Point3 &p) const;
 
  private:
   struct Tree;
