@@ -8,6 +8,8 @@
 #include <wrap/io_trimesh/import.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace eulermap::testing {
@@ -22,7 +24,62 @@ void Finish(Mesh &m) {
 std::string DataMesh(const std::string &name) { return std::string(EULERMAP_SOURCE_DIR) + "/../shared/data/meshes/" + name; }
 std::string SampleFile(const std::string &name) { return std::string(EULERMAP_SOURCE_DIR) + "/samples/" + name; }
 
+namespace {
+// Wavefront OBJ: v, vt and f statements (polygons as fans, wedge texture coordinates).
+// vcglib's reader drops faces that name vertices declared further down the file, as
+// spot.obj does, so the tests read OBJ files with this one.
+void LoadObj(const std::string &path, Mesh &m) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<Point3> positions;
+  std::vector<vcg::Point2d> uvs;
+  std::vector<std::vector<std::pair<int, int>>> faces;  // (vertex, texcoord), 0-based, -1 none
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string key;
+    s >> key;
+    if (key == "v") {
+      Point3 p;
+      s >> p[0] >> p[1] >> p[2];
+      positions.push_back(p);
+    } else if (key == "vt") {
+      vcg::Point2d t;
+      s >> t[0] >> t[1];
+      uvs.push_back(t);
+    } else if (key == "f") {
+      std::vector<std::pair<int, int>> corners;
+      for (std::string token; s >> token;) {
+        const std::size_t slash = token.find('/');
+        const int v = std::stoi(token.substr(0, slash));
+        int t = 0;
+        if (slash != std::string::npos && slash + 1 < token.size() && token[slash + 1] != '/') t = std::stoi(token.substr(slash + 1));
+        corners.push_back({v - 1, t - 1});
+      }
+      faces.push_back(corners);
+    }
+  }
+  m.Clear();
+  vcg::tri::Allocator<Mesh>::AddVertices(m, positions.size());
+  for (std::size_t n = 0; n < positions.size(); ++n) m.vert[n].P() = positions[n];
+  for (const auto &corners : faces)
+    for (std::size_t c = 1; c + 1 < corners.size(); ++c) {
+      const std::pair<int, int> tri[3] = {corners[0], corners[c], corners[c + 1]};
+      auto f = vcg::tri::Allocator<Mesh>::AddFace(m, tri[0].first, tri[1].first, tri[2].first);
+      for (int k = 0; k < 3; ++k)
+        if (tri[k].second >= 0) f->WT(k).P() = uvs.at(tri[k].second);
+    }
+}
+} // namespace
+
 void LoadMesh(const std::string &path, Mesh &m) {
+  if (path.size() > 4 && path.substr(path.size() - 4) == ".obj") {
+    LoadObj(path, m);
+    vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(m);
+    vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+    Finish(m);
+    return;
+  }
   int mask = 0;
   const int err = vcg::tri::io::Importer<Mesh>::Open(m, path.c_str(), mask);
   if (err != 0 && vcg::tri::io::Importer<Mesh>::ErrorCritical(err))
