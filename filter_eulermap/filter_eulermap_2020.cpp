@@ -145,7 +145,10 @@ bool FilterEulermapPlugin::applyFilter(QAction *, MeshDocument &md, const RichPa
   log(LayerLine(AddLayer(md, mapped, result.mapped, out, nullptr)->label(), result.mapped));
   if (request.options.fillHoles) {
     const QString filled = OutputLabel(source.label, "filled");
-    log(LayerLine(AddLayer(md, filled, result.filled, out, nullptr)->label(), result.filled));
+    if (result.filled.FN() > 0)
+      log(LayerLine(AddLayer(md, filled, result.filled, out, nullptr)->label(), result.filled));
+    else
+      log("warning: fill_holes gave no faces, so no " + filled + " layer was made");
   }
   progress(100, "Eulerian map: done");
   return true;

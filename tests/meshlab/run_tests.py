@@ -11,7 +11,8 @@ What it checks, through Debian's meshlab / meshlabserver under Xvfb:
   - each sample script (samples/*.mlx): the cut layer's components, boundary loops and
     Euler characteristic, >= 99% of the mapped vertices within 0.5% of the target's
     bounding-box diagonal from the target, cut and mapped with the same vertices and faces,
-    the report in the log, and the input files unchanged (checksums);
+    the report in the log, the input layers unchanged after the filter and the input
+    files unchanged (checksums);
   - samples/map_meshes.sh writes cut.ply, mapped.ply and report.txt;
   - every bad input fails the filter with its message, without a crash;
   - the GUI: meshlab loads the plugin, and (with xdotool) the filter is run from
@@ -171,7 +172,8 @@ def make_sample_test(name, source, target, expect):
         shutil.rmtree(outdir, ignore_errors=True)
         before = sample_checksums()
         cut, mapped, filled = (os.path.join(outdir, f) for f in ("cut.ply", "mapped.ply", "filled.ply"))
-        saves = [(cut, 2), (mapped, 3)] + ([(filled, 4)] if expect.get("filled") else [])
+        layer0, layer1 = os.path.join(outdir, "layer0_after.ply"), os.path.join(outdir, "layer1_after.ply")
+        saves = [(cut, 2), (mapped, 3), (layer0, 0), (layer1, 1)] + ([(filled, 4)] if expect.get("filled") else [])
         t0 = time.time()
         rc, log = meshlabserver(outdir, [os.path.join(SAMPLES, source), os.path.join(SAMPLES, target)],
                                 os.path.join(SAMPLES, name + ".mlx"), saves)
@@ -189,6 +191,10 @@ def make_sample_test(name, source, target, expect):
         if "anchors" in expect:
             check(any(l.startswith(f"anchors: {expect['anchors']} named pairs") for l in report),
                   f"the log does not report {expect['anchors']} named anchor pairs")
+        for before_file, after_file in ((source, layer0), (target, layer1)):
+            a, b = meshes.read_mesh(os.path.join(SAMPLES, before_file)), meshes.read_mesh(after_file)
+            check(a.faces == b.faces and max(abs(p - q) for u, v in zip(a.verts, b.verts) for p, q in zip(u, v)) < 1e-6,
+                  f"the input layer {before_file} was changed by the filter")
         c, m = meshes.read_mesh(cut), meshes.read_mesh(mapped)
         check(len(c.verts) == len(m.verts) and c.faces == m.faces,
               f"cut ({len(c.verts)} v) and mapped ({len(m.verts)} v) differ in vertices or faces")
@@ -206,9 +212,10 @@ def make_sample_test(name, source, target, expect):
         want = (expect["components"], expect["loops"], expect["chi"])
         check(topo == want, f"cut layer: components, boundary loops, Euler characteristic {topo}, expected {want}")
         if expect.get("filled"):
-            f = meshes.read_mesh(filled)
-            ftopo = meshes.topology(f)
-            check(ftopo[1] == 0, f"the filled layer still has {ftopo[1]} boundary loops")
+            check(os.path.isfile(filled), "no filled layer was saved (fill_holes is on)")
+            ftopo = meshes.topology(meshes.read_mesh(filled))
+            want = (expect["components"], 0, expect["chi"] + expect["loops"])  # each hole closed by a disc
+            check(ftopo == want, f"filled layer: components, boundary loops, Euler characteristic {ftopo}, expected {want}")
     return run
 
 
