@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <random>
@@ -140,6 +141,8 @@ struct Morph::Impl {
   std::vector<Point3> RawAnchors(double t) const;
   std::shared_ptr<const WarpPair> Warps(double t) const;
   std::shared_ptr<const WarpPair> SolveWarps(double t) const;
+  std::shared_ptr<const WarpPair> SolvePair(double t, const std::vector<Point3> &q, const std::vector<Point3> &to0,
+                                            const std::vector<Point3> &to1) const;
 };
 
 // Chooses the mode and, for ARAP+TPS, builds the tetrahedra, their polar decompositions
@@ -360,23 +363,30 @@ std::vector<Point3> Morph::Impl::RawAnchors(double t) const {
   return q;
 }
 
-// Thin-plate warps of time t: solves [K P; P^T 0] [w; c] = [d; 0] once for both value
-// sets d = a (W_t->0) and d = b (W_t->1), with K_ij = |y_i - y_j| (phi(r) = r),
-// P_i = (1, y_i), y_i the normalised q_i(t).
-//   t:       time
-//   returns  the solved pair; a warp whose nodes equal its values is flagged identity
+// Thin-plate warps of time t: SolvePair(t, q(t), a, b).
 std::shared_ptr<const WarpPair> Morph::Impl::SolveWarps(double t) const {
-  const int n = int(a.size());
-  auto pair = std::make_shared<WarpPair>();
-  pair->t = t;
-  pair->centre = centre;
-  pair->unit = unit;
   std::vector<Point3> q;
   if (t == 0) q = a;
   else if (t == 1) q = b;
   else q = RawAnchors(t);
-  pair->identity[0] = q == a;
-  pair->identity[1] = q == b;
+  return SolvePair(t, q, a, b);
+}
+
+// Two thin-plate warps through the nodes q: solves [K P; P^T 0] [w; c] = [d; 0] once for
+// both value sets d = to0 and d = to1, with K_ij = |y_i - y_j| (phi(r) = r), P_i = (1, y_i),
+// y_i the normalised q_i.
+//   t:         time recorded in the pair (for the cache)
+//   returns    the solved pair; a warp whose nodes equal its values is flagged identity
+std::shared_ptr<const WarpPair> Morph::Impl::SolvePair(double t, const std::vector<Point3> &q,
+                                                        const std::vector<Point3> &to0,
+                                                        const std::vector<Point3> &to1) const {
+  const int n = int(q.size());
+  auto pair = std::make_shared<WarpPair>();
+  pair->t = t;
+  pair->centre = centre;
+  pair->unit = unit;
+  pair->identity[0] = q == to0;
+  pair->identity[1] = q == to1;
   pair->nodes.resize(n, 3);
   for (int i = 0; i < n; ++i) pair->nodes.row(i) = ((ToEigen(q[i]) - centre) / unit).transpose();
 
@@ -386,8 +396,8 @@ std::shared_ptr<const WarpPair> Morph::Impl::SolveWarps(double t) const {
     for (int j = 0; j < n; ++j) m(i, j) = (pair->nodes.row(i) - pair->nodes.row(j)).norm();
     m(i, n) = m(n, i) = 1;
     for (int c = 0; c < 3; ++c) m(i, n + 1 + c) = m(n + 1 + c, i) = pair->nodes(i, c);
-    rhs.block<1, 3>(i, 0) = ((ToEigen(a[i]) - centre) / unit).transpose();
-    rhs.block<1, 3>(i, 3) = ((ToEigen(b[i]) - centre) / unit).transpose();
+    rhs.block<1, 3>(i, 0) = ((ToEigen(to0[i]) - centre) / unit).transpose();
+    rhs.block<1, 3>(i, 3) = ((ToEigen(to1[i]) - centre) / unit).transpose();
   }
   Eigen::MatrixXd solution = m.partialPivLu().solve(rhs);
   if ((m * solution - rhs).norm() > 1e-10 * (1 + rhs.norm()))  // nodes (nearly) flat or colliding mid-morph
@@ -520,6 +530,34 @@ Point3 Morph::WarpToTarget(double t, const Point3 &p) const {
   Point3 p0, p1;
   impl_->Warps(t)->Evaluate(p, p0, p1);
   return p1;
+}
+
+// Anchor motion between t0 and t1: the thin-plate warp taking q_i(t0) to q_i(t1),
+// as a velocity (W(p) - p) / (t1 - t0) at every grid node, with each node's closeness
+// to the anchors. Empty (no nodes) in linear-blend mode, where anchors do not move space.
+void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, ScalarField &closeness) const {
+  if (impl_->mode == Mode::LinearBlend) {
+    out = VectorField();
+    closeness = ScalarField();
+    return;
+  }
+  const Grid &g = impl_->f0->grid;
+  const std::vector<Point3> q0 = Anchors(t0), q1 = Anchors(t1);
+  const std::shared_ptr<const WarpPair> w = impl_->SolvePair(t0, q0, q1, q1);
+  if (out.values.size() != g.NodeCount()) out = VectorField(g, Point3(0, 0, 0));
+  if (closeness.values.size() != g.NodeCount()) closeness = ScalarField(g, 0.0);
+  const double dt = t1 - t0;
+#pragma omp parallel for schedule(static)
+  for (long long n = 0; n < (long long)g.NodeCount(); ++n) {
+    const int i = int(n % g.dims.X()), j = int((n / g.dims.X()) % g.dims.Y()), k = int(n / (std::size_t(g.dims.X()) * g.dims.Y()));
+    const Point3 p = g.Node(i, j, k);
+    Point3 moved, unused;
+    w->Evaluate(p, moved, unused);
+    out.values[n] = (moved - p) / dt;
+    double nearest2 = std::numeric_limits<double>::max();
+    for (const Point3 &q : q0) nearest2 = std::min(nearest2, vcg::SquaredDistance(p, q));
+    closeness.values[n] = std::exp(-nearest2 / (radius * radius));
+  }
 }
 
 } // namespace eulermap

@@ -37,6 +37,12 @@ class Morph {
   void Frame(double t, ScalarField &out) const;
 
   std::vector<Point3> Anchors(double t) const;        // q_i(t); q_i(0) = a_i, q_i(1) = b_i
+  // Velocity of space that the anchors impose between t0 and t1: the thin-plate warp
+  // q_i(t0) -> q_i(t1) minus the identity, over (t1 - t0), at every grid node, and
+  // each node's closeness exp(-(d / radius)^2) to the nearest anchor q_i(t0) (d and
+  // radius in world units); empty fields in linear-blend mode. The velocity solve's
+  // prior (velocity.h).
+  void AnchorMotion(double t0, double t1, double radius, VectorField &velocity, ScalarField &closeness) const;
   Point3 WarpToSource(double t, const Point3 &p) const;  // W_t->0
   Point3 WarpToTarget(double t, const Point3 &p) const;  // W_t->1
 

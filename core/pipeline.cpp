@@ -8,6 +8,7 @@
 #include "topology.h"
 #include "tracker.h"
 #include "transfer.h"
+#include "untangle.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -49,7 +50,7 @@ class ThreadScope {
 };
 
 void CopyMesh(Mesh &to, Mesh &from) {
-  vcg::tri::Append<Mesh, Mesh>::MeshCopy(to, from, false, true);
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(to, from, false, false);
   vcg::tri::UpdateBounding<Mesh>::Box(to);
 }
 
@@ -140,15 +141,20 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   Tracker tracker(std::move(points), fCur);
 
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
-  VectorField V;
+  VectorField V, anchorMotion;
+  ScalarField anchorWeight;
   const double dt = 1.0 / options.steps;
   for (int k = 0; k < options.steps; ++k) {
     report(0.1 + 0.8 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
     t0 = Clock::now();
     morph.Frame((k + 1) * dt, fNext);  // INT: f(., t_k+1), Eq. 1
+    if (options.anchorWeight > 0) {  // the prior of velocity.h: beta_i = anchorWeight * closeness
+      morph.AnchorMotion(k * dt, (k + 1) * dt, options.anchorRadius * grid.h, anchorMotion, anchorWeight);
+      for (double &w : anchorWeight.values) w *= options.anchorWeight;
+    }
     rep.times.interp += Seconds(t0);
     t0 = Clock::now();
-    const VelocitySolve s = solver.Solve(fCur, fNext, dt, V);  // VF: V_k, Eqs. 2-5
+    const VelocitySolve s = solver.Solve(fCur, fNext, dt, V, anchorMotion, anchorWeight);  // VF: V_k, Eqs. 2-5
     rep.times.velocity += Seconds(t0);
     rep.solverFigures.totalIterations += s.iterations;
     rep.solverFigures.maxIterations = std::max(rep.solverFigures.maxIterations, s.iterations);
@@ -165,20 +171,23 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   const ClosestPoint placedIndex(placed);
   const double diag = placed.bbox.Diag();
   const std::vector<Point3> &tracked = tracker.Points();
+  // The cut source (saddle surgery, issue 3, is not in yet: the source as it is) and
+  // the images of its vertices.
+  Mesh &cut = result.cut;
+  cut.Clear();
+  CopyMesh(cut, source);
   const std::vector<Point3> images(tracked.begin(), tracked.begin() + source.vert.size());
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
   std::vector<ClosestHit> hits(images.size());
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(images.size()); ++n) hits[n] = placedIndex.Query(images[n]);
-  for (std::size_t n = 0; n < a.size(); ++n)
-    rep.quality.anchorErrorCells = std::max(rep.quality.anchorErrorCells,
-                                            vcg::Distance(placedIndex.Query(tracked[images.size() + n]).point, bPlaced[n]) / grid.h);
+  for (std::size_t n = 0; n < a.size(); ++n) {
+    const double e = vcg::Distance(placedIndex.Query(tracked[source.vert.size() + n]).point, bPlaced[n]) / grid.h;
+    rep.quality.anchorErrorCells = std::max(rep.quality.anchorErrorCells, e);
+  }
 
   // Outputs: cut (source with TargetPosition), mapped (vertices at their images).
   const Similarity back = place.Inverse();
-  Mesh &cut = result.cut;
-  cut.Clear();
-  CopyMesh(cut, source);
   auto targetPosition = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   for (std::size_t n = 0; n < cut.vert.size(); ++n) targetPosition[n] = back.Apply(hits[n].point);
   if (options.transferTexture) PullTexCoords(cut, target, hits, placed);
@@ -187,10 +196,15 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   mapped.Clear();
   CopyMesh(mapped, cut);
   for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
+  const ClosestPoint targetIndex(target);
+  rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
+  if (options.untangle) {
+    rep.untangledVertices = Untangle(mapped, targetIndex);
+    for (std::size_t n = 0; n < mapped.vert.size(); ++n) targetPosition[n] = mapped.vert[n].cP();
+  }
   vcg::tri::UpdateBounding<Mesh>::Box(mapped);
   vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(mapped);
 
-  const ClosestPoint targetIndex(target);
   rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag());
   rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
   rep.quality.longestEdgeCells = LongestEdge(mapped) * place.scale / grid.h;

@@ -38,10 +38,13 @@ struct Options {
   int steps = 40;            // time steps from t = 0 to 1
   double alpha = 2;          // smoothness weight of Eq. 2
   double holeRadius = 1;     // sphere radius around a saddle, in grid cells
+  double anchorWeight = 10;  // beta at an anchor: pull of its motion on V (velocity.h); 0: the paper's Eq. 2
+  double anchorRadius = 3;   // reach of that pull, in grid cells
   Align align = Align::CentreAndScale;  // placement when there are no anchors
   VelocitySolver::Method solver = VelocitySolver::Method::ConjugateGradient;
   double tolerance = 1e-4;   // relative residual that ends a velocity solve
   int maxIterations = 500;   // per step
+  bool untangle = true;      // relax folded places of the map on the target (untangle.h)
   bool fillHoles = false;
   bool transferTexture = true;
   int threads = 0;           // 0: all cores

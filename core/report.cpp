@@ -44,6 +44,8 @@ std::string Report::ToText() const {
               "anchor error %.2f cells, mean distortion %.3f\n",
               100 * quality.onSurfaceRate, 100 * quality.coverage, 100 * quality.flippedAreaShare,
               quality.longestEdgeCells, quality.anchorErrorCells, quality.meanDistortion);
+  o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target\n",
+              100 * quality.flippedBeforeUntangling, untangledVertices);
   if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
   return o.str();
 }

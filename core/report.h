@@ -33,6 +33,7 @@ struct MapQuality {
   double coverage = 0;          // share of uniform target samples within 2% of the diagonal
                                 // from the mapped surface
   double flippedAreaShare = 0;  // area share of mapped faces facing against the target
+  double flippedBeforeUntangling = 0;  // the same, of the map as tracked (before untangle.h)
   double longestEdgeCells = 0;  // longest mapped edge, in grid cells
   double anchorErrorCells = 0;  // largest |F(a_i) - b_i|, in grid cells (0 without anchors)
   double meanDistortion = 0;    // mean per-vertex distortion (vertex quality of the cut layer)
@@ -67,6 +68,7 @@ struct Report {
   MapQuality quality;
   std::vector<SaddleEvent> saddles;
   std::vector<HoleEvent> holes;
+  int untangledVertices = 0;  // vertices moved by untangle.h
   int cutBoundaryLoops = 0;
   int cutEulerCharacteristic = 0;
   int cutComponents = 0;

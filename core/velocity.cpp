@@ -18,13 +18,16 @@ int VelocitySolver::Neighbours(int i, int j, int k) const {
   return (i > 0) + (i + 1 < d.X()) + (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());
 }
 
-VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V) {
+VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
+                                    const VectorField &prior, const ScalarField &priorWeight) {
   grid_ = fk.grid;
   const std::size_t n = grid_.NodeCount();
   if (V.values.size() != n || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
   g_.resize(n);
   b_.resize(n);
-  // g = grad of (f_k + f_k+1)/2, f_t = (f_k+1 - f_k)/dt, b = -g f_t  (right-hand side of (*)).
+  const bool withPrior = !prior.values.empty();
+  beta_ = withPrior ? priorWeight.values : std::vector<double>();
+  // g = grad of (f_k + f_k+1)/2, f_t = (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*)).
   const vcg::Point3i d = grid_.dims;
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < d.Z(); ++k)
@@ -34,10 +37,13 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
         const Point3 g = (fk.NodeGradient(i, j, k) + fk1.NodeGradient(i, j, k)) * 0.5;
         g_[idx] = g;
         b_[idx] = g * -((fk1.values[idx] - fk.values[idx]) / dt);
+        if (withPrior) b_[idx] += prior.values[idx] * beta_[idx];
       }
   VelocitySolve s = method_ == Method::ConjugateGradient ? SolveConjugateGradient(V) : SolveGaussSeidel(V);
   g_.clear();
   g_.shrink_to_fit();
+  beta_.clear();
+  beta_.shrink_to_fit();
   b_.clear();
   b_.shrink_to_fit();
   return s;
@@ -59,7 +65,7 @@ void VelocitySolver::Apply(const std::vector<Point3> &x, std::vector<Point3> &ou
         if (k > 0) lap += x[idx] - x[idx - sz];
         if (k + 1 < d.Z()) lap += x[idx] - x[idx + sz];
         const Point3 &g = g_[idx];
-        out[idx] = g * (g * x[idx]) + lap * alpha_;
+        out[idx] = g * (g * x[idx]) + lap * alpha_ + x[idx] * Beta(idx);
       }
 }
 
@@ -80,7 +86,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V) {
   }
   std::vector<Point3> r(n), z(n), p(n), q(n);
   double rNorm = Residual(V, r);
-  // z = M^-1 r with M the 3x3 diagonal blocks g g^T + alpha n_i I (Sherman-Morrison).
+  // z = M^-1 r with M the 3x3 diagonal blocks g g^T + (alpha n_i + beta) I (Sherman-Morrison).
   auto precondition = [&](const std::vector<Point3> &in, std::vector<Point3> &out) {
     const vcg::Point3i d = grid_.dims;
 #pragma omp parallel for schedule(static)
@@ -88,7 +94,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V) {
       for (int j = 0; j < d.Y(); ++j)
         for (int i = 0; i < d.X(); ++i) {
           const std::size_t idx = grid_.Index(i, j, k);
-          const double c = alpha_ * Neighbours(i, j, k);
+          const double c = alpha_ * Neighbours(i, j, k) + Beta(idx);
           const Point3 &g = g_[idx];
           out[idx] = (in[idx] - g * ((g * in[idx]) / (c + g.SquaredNorm()))) / c;
         }
@@ -150,7 +156,7 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(VectorField &V) {
               if (k + 1 < d.Z()) sum += x[idx + sz], ++nb;
               // Eq. 5 from (*): V = Vbar - g (g . Vbar + f_t) / (alpha n + |g|^2), with
               // b = -g f_t, written for a general b: solve (g g^T + c I) V = alpha sum + b.
-              const double c = alpha_ * nb;
+              const double c = alpha_ * nb + Beta(idx);
               const Point3 rhs = sum * alpha_ + b_[idx];
               const Point3 &g = g_[idx];
               x[idx] = (rhs - g * ((g * rhs) / (c + g.SquaredNorm()))) / c;

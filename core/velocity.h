@@ -2,7 +2,8 @@
 //
 // V_k minimises the discrete form of Eq. 2 on the grid nodes,
 //
-//   E(V) = sum_nodes (g . V + f_t)^2 + alpha * sum_grid_edges |V_i - V_j|^2,
+//   E(V) = sum_nodes (g . V + f_t)^2 + alpha * sum_grid_edges |V_i - V_j|^2
+//          + sum_nodes beta_i |V - P|^2,
 //
 // with g = grad f and f_t = df/dt taken between the frames f(., t_k) and f(., t_k+1)
 // (g of their mean, f_t their difference over dt). The smoothness term is |grad V|^2
@@ -12,6 +13,13 @@
 //
 //   (g g^T + alpha n_i I) V_i - alpha sum_j V_j = -g f_t,                     (*)
 //
+// The last term is ours, not the paper's: P is the velocity the anchors impose
+// (Morph::AnchorMotion), beta_i a weight that is large near the moving anchors q_i(t)
+// and vanishes away from them. The data term fixes V's normal part; near an anchor its
+// own motion (which stays on the zero level set, as f(q_i(t), t) = 0) settles the
+// tangential part too, which Eq. 2 alone leaves to smoothness, so anchor points land
+// on their partners. Without anchors beta = 0 (the paper's Eq. 2). With it (*) reads
+// (g g^T + (alpha n_i + beta_i) I) V_i - alpha sum_j V_j = -g f_t + beta_i P_i,
 // a symmetric positive definite system. Two solvers:
 //   - Gauss-Seidel, the paper's update (Eq. 5, derived from (*) with one alpha, by the
 //     Sherman-Morrison formula): V_i = Vbar - g (g . Vbar + f_t) / (alpha n_i + |g|^2),
@@ -37,9 +45,11 @@ class VelocitySolver {
       : alpha_(alpha), method_(method), tolerance_(tolerance), maxIterations_(maxIterations) {}
 
   // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
-  //      and zeroed when its grid differs)
+  //      and zeroed when its grid differs); prior P and its weights beta on the same
+  //      grid, or empty fields for none
   // out: V = V_k, and the solve's figures
-  VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V);
+  VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
+                      const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
 
  private:
   VelocitySolve SolveConjugateGradient(VectorField &V);
@@ -49,6 +59,7 @@ class VelocitySolver {
   // out = A x (the operator of (*)).
   void Apply(const std::vector<Point3> &x, std::vector<Point3> &out) const;
   int Neighbours(int i, int j, int k) const;
+  double Beta(std::size_t idx) const { return beta_.empty() ? 0 : beta_[idx]; }
 
   double alpha_;
   Method method_;
@@ -57,6 +68,7 @@ class VelocitySolver {
   // Per-step data of (*): g and b = -g f_t per node (held only during Solve).
   Grid grid_;
   std::vector<Point3> g_, b_;
+  std::vector<double> beta_;  // prior weights (empty: none)
 };
 
 } // namespace eulermap

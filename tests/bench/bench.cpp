@@ -5,6 +5,7 @@
 //   eulermap_bench row N [--threads T] [--solver cg|gs]   one of the four Table 1 rows (N = 1..4)
 //   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a CELLS^3 grid
 //   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N]
+//   options of every mode: --alpha A --anchor-weight B (velocity.h)
 //
 // `row` and `grid` print one line of the table (`|`-separated); `map` prints the report.
 #include "tests/support/meshes.h"
@@ -87,8 +88,16 @@ int Flag(int argc, char **argv, const char *name, int fallback) {
   return fallback;
 }
 
+double FlagValue(int argc, char **argv, const char *name, double fallback) {
+  for (int i = 0; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], name)) return std::atof(argv[i + 1]);
+  return fallback;
+}
+
 Options OptionsFrom(int argc, char **argv) {
   Options o;
+  o.alpha = FlagValue(argc, argv, "--alpha", o.alpha);
+  o.anchorWeight = FlagValue(argc, argv, "--anchor-weight", o.anchorWeight);
   o.threads = Flag(argc, argv, "--threads", 0);
   o.gridResolution = Flag(argc, argv, "--grid", o.gridResolution);
   o.steps = Flag(argc, argv, "--steps", o.steps);
