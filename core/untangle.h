@@ -16,6 +16,6 @@
 
 namespace eulermap {
 
-int Untangle(Mesh &mapped, const ClosestPoint &target, int rounds = 50, int rings = 1);
+int Untangle(Mesh &mapped, const ClosestPoint &target, int rounds = 50, int rings = 0);
 
 } // namespace eulermap
