@@ -5,6 +5,7 @@
 #include "morph.h"
 #include "quality.h"
 #include "sdf.h"
+#include "surgery.h"
 #include "topology.h"
 #include "tracker.h"
 #include "transfer.h"
@@ -139,6 +140,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   for (const Vertex &v : source.vert) points.push_back(v.cP());
   points.insert(points.end(), a.begin(), a.end());
   Tracker tracker(std::move(points), fCur);
+  Surgery surgery(source, options.holeRadius * grid.h, grid.h);  // surgery.h
 
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
   VectorField V, anchorMotion;
@@ -161,6 +163,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
     rep.solverFigures.maxFinalResidual = std::max(rep.solverFigures.maxFinalResidual, s.residual);
     t0 = Clock::now();
     tracker.Advance(V, fNext, dt);  // DEF: Eq. 7
+    surgery.Step(k, V, fNext, dt, tracker.Points());  // saddles, cuts, refinement near them (surgery.h)
     rep.times.deform += Seconds(t0);
     std::swap(fCur, fNext);
   }
@@ -171,12 +174,10 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   const ClosestPoint placedIndex(placed);
   const double diag = placed.bbox.Diag();
   const std::vector<Point3> &tracked = tracker.Points();
-  // The cut source (saddle surgery, issue 3, is not in yet: the source as it is) and
-  // the images of its vertices.
+  // The cut source (surgery.h), and the images of its vertices.
   Mesh &cut = result.cut;
-  cut.Clear();
-  CopyMesh(cut, source);
-  const std::vector<Point3> images(tracked.begin(), tracked.begin() + source.vert.size());
+  const std::vector<Point3> images = surgery.Build(source, tracked, cut, rep.holes);
+  rep.saddles = surgery.Saddles();
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
   std::vector<ClosestHit> hits(images.size());
 #pragma omp parallel for schedule(static)
@@ -191,6 +192,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   auto targetPosition = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   for (std::size_t n = 0; n < cut.vert.size(); ++n) targetPosition[n] = back.Apply(hits[n].point);
   if (options.transferTexture) PullTexCoords(cut, target, hits, placed);
+  if (options.fillHoles) FillHoles(cut, result.filled);
 
   Mesh &mapped = result.mapped;
   mapped.Clear();

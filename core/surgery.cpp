@@ -1,0 +1,549 @@
+#include "surgery.h"
+
+#include <vcg/complex/algorithms/hole.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/append.h>
+#include <vcg/space/distance3.h>
+#include <vcg/space/triangle3.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace eulermap {
+
+namespace {
+
+constexpr double kSplitCells = 2;    // tracked edges longer than this (in cells) are split there
+constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
+constexpr double kSpreadStretch = 2;  // refinement spreads to faces stretched more than this
+constexpr double kReachCells = 10;  // the stable manifold's crossings count within this many cells (+ hole radius)
+constexpr double kCriticalShare = 0.5;  // f is critical at a saddle where |grad f| < this share of its size on the surface
+
+std::uint64_t Key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
+
+int Find(std::vector<int> &parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+double DistanceToTriangle(const Point3 &p, const Point3 &a, const Point3 &b, const Point3 &c) {
+  double distance;
+  Point3 closest;
+  vcg::TrianglePointDistance(vcg::Triangle3<double>(a, b, c), p, distance, closest);
+  return distance;
+}
+
+bool FarFromBox(const Point3 &p, double r, const Point3 &a, const Point3 &b, const Point3 &c) {
+  for (int x = 0; x < 3; ++x)
+    if (std::min({a[x], b[x], c[x]}) > p[x] + r || std::max({a[x], b[x], c[x]}) < p[x] - r) return true;
+  return false;
+}
+
+double Area(const Point3 &a, const Point3 &b, const Point3 &c) { return ((b - a) ^ (c - a)).Norm() / 2; }
+
+// |grad f| at p by central differences one cell wide: close to 0 at a critical point of f,
+// also where f has a kink there (a blend of distance fields is critical on their medial
+// axes, where the trilinear gradient is one-sided).
+double CentralGradient(const ScalarField &f, const Point3 &p, double h) {
+  Point3 g;
+  for (int a = 0; a < 3; ++a) {
+    Point3 d(0, 0, 0);
+    d[a] = h;
+    g[a] = (f.Value(p + d) - f.Value(p - d)) / (2 * h);
+  }
+  return g.Norm();
+}
+
+// Distance s >= 0 along the unit direction d from o to triangle (a, b, c), or -1 if the
+// ray misses it (Moller-Trumbore).
+double RayTriangle(const Point3 &o, const Point3 &d, const Point3 &a, const Point3 &b, const Point3 &c) {
+  const Point3 e1 = b - a, e2 = c - a, p = d ^ e2;
+  const double det = e1 * p;
+  if (std::abs(det) < 1e-30) return -1;
+  const Point3 t = o - a;
+  const double u = (t * p) / det;
+  if (u < 0 || u > 1) return -1;
+  const Point3 q = t ^ e1;
+  const double v = (d * q) / det;
+  if (v < 0 || u + v > 1) return -1;
+  const double s = (e2 * q) / det;
+  return s >= 0 ? s : -1;
+}
+
+// The median of |grad f| over (up to 1000 of) the tracked points: its size on the surface.
+double TypicalGradient(const ScalarField &f, const std::vector<Point3> &points) {
+  std::vector<double> g;
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / 1000);
+  for (std::size_t n = 0; n < points.size(); n += stride) g.push_back(f.Gradient(points[n]).Norm());
+  if (g.empty()) return 0;
+  std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
+  return g[g.size() / 2];
+}
+
+} // namespace
+
+Surgery::Surgery(const Mesh &source, double radius, double cell)
+    : radius_(radius), cell_(cell), saddles_(cell) {
+  if (source.vn != int(source.vert.size()) || source.fn != int(source.face.size()))
+    throw std::logic_error("Surgery: the source has deleted vertices or faces");
+  sourceVertices_ = int(source.vert.size());
+  sourceFaces_ = int(source.face.size());
+  for (const Vertex &v : source.vert) sourcePosition_.push_back(v.cP());
+  // Faces, the source's own boundary edges, connected components and their areas.
+  std::unordered_map<std::uint64_t, int> edgeUse;
+  std::vector<int> parent(sourceVertices_);
+  std::iota(parent.begin(), parent.end(), 0);
+  tris_.resize(sourceFaces_);
+  for (int f = 0; f < sourceFaces_; ++f) {
+    Tri &t = tris_[f];
+    for (int c = 0; c < 3; ++c) t.v[c] = int(vcg::tri::Index(source, source.face[f].cV(c)));
+    t.root = f;
+    t.bary = {Point3(1, 0, 0), Point3(0, 1, 0), Point3(0, 0, 1)};
+    for (int e = 0; e < 3; ++e) {
+      ++edgeUse[Key(t.v[e], t.v[(e + 1) % 3])];
+      parent[Find(parent, t.v[e])] = Find(parent, t.v[(e + 1) % 3]);
+    }
+  }
+  std::vector<int> componentOf(sourceVertices_, -1);
+  for (Tri &t : tris_) {
+    for (int e = 0; e < 3; ++e) t.border[e] = edgeUse[Key(t.v[e], t.v[(e + 1) % 3])] == 1;
+    int &c = componentOf[Find(parent, t.v[0])];
+    if (c < 0) c = int(componentArea_.size()), componentArea_.push_back(0);
+    t.component = c;
+    componentArea_[c] += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
+  }
+}
+
+std::vector<Point3> Surgery::Positions(const std::vector<Point3> &tracked) const {
+  std::vector<Point3> p(tracked.begin(), tracked.begin() + sourceVertices_);
+  for (const std::array<int, 2> &w : trackedBy_) p.push_back(batches_[w[0]].Points()[w[1]]);
+  return p;
+}
+
+void Surgery::Step(int k, const VectorField &V, const ScalarField &fNext, double dt, const std::vector<Point3> &tracked) {
+  for (Tracker &batch : batches_) batch.Advance(V, fNext, dt);
+  const std::vector<Saddle> found = FindSaddles(V);
+  const std::vector<int> event = saddles_.Observe(k, found);
+  const bool refining = std::any_of(tris_.begin(), tris_.end(), [](const Tri &t) { return t.state == kAlive && t.refinable; });
+  if (found.empty() && !refining) return;
+  std::vector<Point3> position = Positions(tracked);
+
+  // 1-2. A saddle where f(., t_k+1) is critical cuts (a) the faces within its sphere, and
+  // all faces around a point inside it (no rim vertex is left where trajectories part);
+  // (b) at the step the level set passes it (f changes sign there), the faces its stable
+  // manifold crosses nearest to it (the tracked surface lags the level set near a critical
+  // point, where V vanishes: there the sheets part before they meet the sphere).
+  const double typical = TypicalGradient(fNext, position);
+  lastLevel_.resize(saddles_.Events().size(), std::nan(""));
+  std::vector<std::pair<int, int>> cuts;  // (face, event)
+  std::vector<char> inside(position.size());
+  for (std::size_t s = 0; s < found.size(); ++s) {
+    const Point3 &centre = found[s].position;
+    const double g = CentralGradient(fNext, centre, cell_), level = fNext.Value(centre);
+    const bool crossed = lastLevel_[event[s]] * level <= 0;  // false while unknown (NaN)
+    lastLevel_[event[s]] = level;
+    if (g > kCriticalShare * typical) continue;
+    for (std::size_t n = 0; n < position.size(); ++n) inside[n] = vcg::SquaredDistance(position[n], centre) <= radius_ * radius_;
+    for (int n = 0; n < int(tris_.size()); ++n) {
+      const Tri &t = tris_[n];
+      if (t.state != kAlive) continue;
+      const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+      if (inside[t.v[0]] || inside[t.v[1]] || inside[t.v[2]] ||
+          (!FarFromBox(centre, radius_, a, b, c) && DistanceToTriangle(centre, a, b, c) <= radius_))
+        cuts.push_back({n, event[s]});
+    }
+    if (crossed)
+      for (int n : StableCrossing(found[s], position)) cuts.push_back({n, event[s]});
+  }
+  std::vector<std::pair<int, Point3>> cutting;  // events that cut at this step, and where
+  for (const std::pair<int, int> &c : cuts) {
+    if (tris_[c.first].state == kAlive) tris_[c.first].state = c.second;
+    const Point3 &where = found[std::find(event.begin(), event.end(), c.second) - event.begin()].position;
+    SaddleEvent &e = saddles_.Events()[c.second];
+    if (!e.cut) e.cut = true, e.step = k, e.position = where;
+    if (std::none_of(cutting.begin(), cutting.end(), [&](auto &w) { return w.first == c.second; })) cutting.push_back({c.second, where});
+  }
+  // 3. Clean the rims; 4. refine them as they open.
+  if (!cutting.empty()) Clean(position, cutting);
+  Refine(position, fNext);
+}
+
+std::vector<int> Surgery::StableCrossing(const Saddle &saddle, const std::vector<Point3> &position) const {
+  const Point3 &o = saddle.position, &d = saddle.stable;
+  const double reach = kReachCells * cell_ + radius_;
+  std::vector<int> cut;
+  if (saddle.expandingDirections == 2) {
+    // Two sheets arrive along the stable line: on each side, the nearest face it pierces,
+    // and the faces within the sphere's radius of that point.
+    for (double side : {1.0, -1.0}) {
+      int hit = -1;
+      double nearest = reach;
+      for (int n = 0; n < int(tris_.size()); ++n) {
+        const Tri &t = tris_[n];
+        if (t.state != kAlive) continue;
+        const double s = RayTriangle(o, d * side, position[t.v[0]], position[t.v[1]], position[t.v[2]]);
+        if (s >= 0 && s < nearest) nearest = s, hit = n;
+      }
+      if (hit < 0) continue;
+      const Point3 q = o + d * (side * nearest);
+      for (int n = 0; n < int(tris_.size()); ++n) {
+        const Tri &t = tris_[n];
+        if (t.state != kAlive) continue;
+        const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+        if (n == hit || (!FarFromBox(q, radius_, a, b, c) && DistanceToTriangle(q, a, b, c) <= radius_)) cut.push_back(n);
+      }
+    }
+    return cut;
+  }
+  // A neck pinches across the stable plane: the loop of faces crossing it around the
+  // saddle, from the nearest such face along faces that share a crossing edge.
+  auto side = [&](int p) { return (position[p] - o) * d >= 0; };
+  auto crosses = [&](const Tri &t) { return side(t.v[0]) != side(t.v[1]) || side(t.v[1]) != side(t.v[2]); };
+  int seed = -1;
+  double nearest = reach;
+  std::unordered_map<std::uint64_t, std::vector<int>> faces;  // crossing faces near the saddle, by edge
+  for (int n = 0; n < int(tris_.size()); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state != kAlive || !crosses(t)) continue;
+    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+    if (FarFromBox(o, 2 * reach, a, b, c)) continue;
+    const double dist = DistanceToTriangle(o, a, b, c);
+    if (dist > 2 * reach) continue;
+    if (dist < nearest) nearest = dist, seed = n;
+    for (int e = 0; e < 3; ++e)
+      if (side(t.v[e]) != side(t.v[(e + 1) % 3])) faces[Key(t.v[e], t.v[(e + 1) % 3])].push_back(n);
+  }
+  if (seed < 0) return cut;
+  std::vector<char> seen(tris_.size(), 0);
+  std::vector<int> stack = {seed};
+  seen[seed] = 1;
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    cut.push_back(n);
+    const Tri &t = tris_[n];
+    for (int e = 0; e < 3; ++e) {
+      auto it = faces.find(Key(t.v[e], t.v[(e + 1) % 3]));
+      if (it == faces.end()) continue;
+      for (int m : it->second)
+        if (!seen[m]) seen[m] = 1, stack.push_back(m);
+    }
+  }
+  return cut;
+}
+
+void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::pair<int, Point3>> &cutting) {
+  // Faces the cleaning removes go to the nearest saddle that cut at this step.
+  auto remove = [&](Tri &t) {
+    const Point3 centre = (position[t.v[0]] + position[t.v[1]] + position[t.v[2]]) / 3;
+    double best = 1e300;
+    for (const auto &c : cutting)
+      if (vcg::Distance(c.second, centre) < best) best = vcg::Distance(c.second, centre), t.state = c.first;
+  };
+  for (int round = 0; round < 1000; ++round) {
+    std::unordered_map<std::uint64_t, std::vector<int>> faces;  // alive faces around each edge
+    for (int n = 0; n < int(tris_.size()); ++n)
+      if (tris_[n].state == kAlive)
+        for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
+    auto rim = [&](const Tri &t, int e) {
+      return !t.border[e] && faces[Key(t.v[e], t.v[(e + 1) % 3])].size() == 1;
+    };
+    bool changed = false;
+    // Ears: two or more edges on a rim.
+    for (Tri &t : tris_)
+      if (t.state == kAlive && rim(t, 0) + rim(t, 1) + rim(t, 2) >= 2) remove(t), changed = true;
+    if (changed) continue;
+    // Non-manifold vertices on a rim: keep the largest fan of faces around them.
+    std::unordered_map<int, std::vector<int>> around;
+    for (int n = 0; n < int(tris_.size()); ++n)
+      if (tris_[n].state == kAlive)
+        for (int e = 0; e < 3; ++e)
+          if (rim(tris_[n], e)) around[tris_[n].v[e]], around[tris_[n].v[(e + 1) % 3]];
+    for (int n = 0; n < int(tris_.size()); ++n)
+      if (tris_[n].state == kAlive)
+        for (int c = 0; c < 3; ++c) {
+          auto it = around.find(tris_[n].v[c]);
+          if (it != around.end()) it->second.push_back(n);
+        }
+    std::vector<int> parent(tris_.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (auto &[v, fan] : around) {
+      for (int n : fan) {
+        const Tri &t = tris_[n];
+        for (int e = 0; e < 3; ++e)
+          if (t.v[e] == v || t.v[(e + 1) % 3] == v)
+            for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])]) parent[Find(parent, n)] = Find(parent, m);
+      }
+      std::unordered_map<int, int> size;
+      for (int n : fan) ++size[Find(parent, n)];
+      if (size.size() < 2) continue;
+      const int largest = std::max_element(size.begin(), size.end(), [](auto &a, auto &b) { return a.second < b.second; })->first;
+      for (int n : fan)
+        if (tris_[n].state == kAlive && Find(parent, n) != largest) remove(tris_[n]), changed = true;
+    }
+    if (changed) continue;
+    // Islands: pieces with a rim and less than kIslandShare of their component's area.
+    std::vector<int> piece(tris_.size(), -1), stack;
+    for (int seed = 0; seed < int(tris_.size()); ++seed) {
+      if (tris_[seed].state != kAlive || piece[seed] >= 0) continue;
+      std::vector<int> members;
+      bool hasRim = false;
+      double area = 0;
+      piece[seed] = seed;
+      stack.push_back(seed);
+      while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        members.push_back(n);
+        const Tri &t = tris_[n];
+        area += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
+        for (int e = 0; e < 3; ++e) {
+          hasRim = hasRim || rim(t, e);
+          for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])])
+            if (piece[m] < 0) piece[m] = seed, stack.push_back(m);
+        }
+      }
+      if (hasRim && area < kIslandShare * componentArea_[tris_[seed].component]) {
+        for (int n : members) remove(tris_[n]);
+        changed = true;
+      }
+    }
+    if (!changed) {
+      // The rim is refined as the hole opens (Refine).
+      for (Tri &t : tris_)
+        if (t.state == kAlive && (rim(t, 0) || rim(t, 1) || rim(t, 2))) t.refinable = true;
+      break;
+    }
+  }
+}
+
+void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext) {
+  if (std::none_of(tris_.begin(), tris_.end(), [](const Tri &t) { return t.state == kAlive && t.refinable; })) return;
+  const double limit = kSplitCells * cell_;
+  std::vector<Point3> born;  // tracked positions of the points added at this step
+  for (int pass = 0; pass < 4; ++pass) {
+    std::unordered_map<std::uint64_t, std::vector<int>> faces;
+    for (int n = 0; n < int(tris_.size()); ++n)
+      if (tris_[n].state == kAlive)
+        for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
+    auto longEdge = [&](const Tri &t, int e) { return vcg::Distance(position[t.v[e]], position[t.v[(e + 1) % 3]]) > limit; };
+    // Refinable faces spread to neighbours stretched by the opening hole (long, and
+    // longer than kSpreadStretch times on the source).
+    auto torn = [&](const Tri &t, int e) {
+      const int a = t.v[e], b = t.v[(e + 1) % 3];
+      return longEdge(t, e) && vcg::Distance(position[a], position[b]) > kSpreadStretch * vcg::Distance(sourcePosition_[a], sourcePosition_[b]);
+    };
+    std::vector<int> spread;
+    for (int n = 0; n < int(tris_.size()); ++n) {
+      const Tri &t = tris_[n];
+      if (t.state != kAlive || t.refinable || !(torn(t, 0) || torn(t, 1) || torn(t, 2))) continue;
+      for (int e = 0; e < 3; ++e)
+        for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])])
+          if (tris_[m].refinable) spread.push_back(n);
+    }
+    for (int n : spread) tris_[n].refinable = true;
+    // Long edges of refinable faces get a midpoint.
+    std::unordered_map<std::uint64_t, int> midpoint;
+    for (const Tri &t : tris_)
+      if (t.state == kAlive && t.refinable)
+        for (int e = 0; e < 3; ++e)
+          if (longEdge(t, e)) midpoint[Key(t.v[e], t.v[(e + 1) % 3])] = -1;
+    if (midpoint.empty() || PointsAdded() + int(midpoint.size()) > sourceVertices_) break;  // the budget: as many as the source has
+    for (auto &[key, id] : midpoint) {
+      const int a = int(key >> 32), b = int(key & 0xffffffffu);
+      id = int(sourcePosition_.size());
+      sourcePosition_.push_back((sourcePosition_[a] + sourcePosition_[b]) / 2);
+      parents_.push_back({a, b});
+      trackedBy_.push_back({int(batches_.size()), int(born.size())});
+      born.push_back(PullBack(fNext, (position[a] + position[b]) / 2, 0));
+      position.push_back(born.back());
+    }
+    // Split every face with a marked edge: 1 -> 2, 3 or 4 faces. Corners are (point,
+    // barycentric coordinates in the parent).
+    const int count = int(tris_.size());
+    for (int n = 0; n < count; ++n) {
+      if (tris_[n].state != kAlive) continue;
+      const Tri parent = tris_[n];
+      int mid[3], marked = 0;
+      for (int e = 0; e < 3; ++e) {
+        auto it = midpoint.find(Key(parent.v[e], parent.v[(e + 1) % 3]));
+        mid[e] = it == midpoint.end() ? -1 : it->second;
+        marked += mid[e] >= 0;
+      }
+      if (marked == 0) continue;
+      struct Corner {
+        int point;
+        Point3 b;
+      };
+      const Corner V[3] = {{parent.v[0], Point3(1, 0, 0)}, {parent.v[1], Point3(0, 1, 0)}, {parent.v[2], Point3(0, 0, 1)}};
+      Corner M[3];
+      for (int e = 0; e < 3; ++e) M[e] = {mid[e], (V[e].b + V[(e + 1) % 3].b) / 2};
+      std::vector<std::array<Corner, 3>> children;
+      if (marked == 3) {
+        children = {{V[0], M[0], M[2]}, {M[0], V[1], M[1]}, {M[2], M[1], V[2]}, {M[0], M[1], M[2]}};
+      } else if (marked == 1) {
+        const int e = mid[0] >= 0 ? 0 : mid[1] >= 0 ? 1 : 2;
+        children = {{V[e], M[e], V[(e + 2) % 3]}, {M[e], V[(e + 1) % 3], V[(e + 2) % 3]}};
+      } else {
+        // Unmarked edge u = (a, b), c opposite; marked edges (b, c) and (c, a).
+        const int u = mid[0] < 0 ? 0 : mid[1] < 0 ? 1 : 2;
+        const Corner &a = V[u], &b = V[(u + 1) % 3], &c = V[(u + 2) % 3];
+        const Corner &mbc = M[(u + 1) % 3], &mca = M[(u + 2) % 3];
+        children = {{mca, mbc, c}};
+        // The quad (a, b, mbc, mca): the shorter diagonal in the tracked surface.
+        if (vcg::Distance(position[a.point], position[mbc.point]) < vcg::Distance(position[b.point], position[mca.point]))
+          children.push_back({a, b, mbc}), children.push_back({a, mbc, mca});
+        else
+          children.push_back({a, b, mca}), children.push_back({b, mbc, mca});
+      }
+      tris_[n].state = kSplit;
+      for (std::array<Corner, 3> &child : children) {
+        // Keep the parent's orientation (positive determinant of the barycentric coordinates).
+        const Point3 &p = child[0].b, &q = child[1].b, &r = child[2].b;
+        if ((p ^ q) * r < 0) std::swap(child[1], child[2]);
+        Tri t = parent;
+        t.state = kAlive;
+        for (int c = 0; c < 3; ++c) {
+          t.v[c] = child[c].point;
+          t.bary[c] = parent.bary[0] * child[c].b[0] + parent.bary[1] * child[c].b[1] + parent.bary[2] * child[c].b[2];
+        }
+        // An edge on the parent's edge e (both ends with coordinate e+2 zero) keeps its border flag.
+        for (int e = 0; e < 3; ++e) {
+          t.border[e] = false;
+          for (int pe = 0; pe < 3; ++pe)
+            if (child[e].b[(pe + 2) % 3] == 0 && child[(e + 1) % 3].b[(pe + 2) % 3] == 0) t.border[e] = parent.border[pe];
+        }
+        tris_.push_back(t);
+      }
+    }
+  }
+  if (!born.empty()) batches_.emplace_back(std::move(born), fNext);
+}
+
+std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &tracked, Mesh &cut,
+                                   std::vector<HoleEvent> &holes) const {
+  holes.clear();
+  cut.Clear();
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(cut, source, false, false);
+  vcg::tri::UpdateBounding<Mesh>::Box(cut);
+  const std::vector<Point3> position = Positions(tracked);
+  bool changed = int(tris_.size()) != sourceFaces_;
+  for (int f = 0; f < sourceFaces_ && !changed; ++f) changed = tris_[f].state != kAlive;
+  if (!changed) return std::vector<Point3>(position.begin(), position.begin() + sourceVertices_);
+
+  // The report: per cutting event, faces removed and rim length on the source. A rim edge
+  // goes to the event of the nearest removed face.
+  const std::vector<SaddleEvent> &events = saddles_.Events();
+  std::vector<int> holeOf(events.size(), -1);
+  for (int e = 0; e < int(events.size()); ++e)
+    if (events[e].cut) holeOf[e] = int(holes.size()), holes.push_back({e, 0, 0});
+  std::vector<std::pair<Point3, int>> removed;  // source-side centroid, hole
+  for (const Tri &t : tris_)
+    if (t.state >= 0) {
+      ++holes[holeOf[t.state]].facesRemoved;
+      removed.push_back({(sourcePosition_[t.v[0]] + sourcePosition_[t.v[1]] + sourcePosition_[t.v[2]]) / 3, holeOf[t.state]});
+    }
+  std::unordered_map<std::uint64_t, int> alive;
+  for (const Tri &t : tris_)
+    if (t.state == kAlive)
+      for (int e = 0; e < 3; ++e) ++alive[Key(t.v[e], t.v[(e + 1) % 3])];
+  for (const Tri &t : tris_)
+    if (t.state == kAlive)
+      for (int e = 0; e < 3; ++e) {
+        if (t.border[e] || alive[Key(t.v[e], t.v[(e + 1) % 3])] != 1 || removed.empty()) continue;
+        const Point3 &a = sourcePosition_[t.v[e]], &b = sourcePosition_[t.v[(e + 1) % 3]];
+        int hole = 0;
+        double best = 1e300;
+        for (const auto &r : removed)
+          if (vcg::SquaredDistance(r.first, (a + b) / 2) < best) best = vcg::SquaredDistance(r.first, (a + b) / 2), hole = r.second;
+        holes[hole].rimLength += vcg::Distance(a, b);
+      }
+
+  // Vertex data of the added points: interpolated from the edge they split.
+  const int points = int(sourcePosition_.size());
+  std::vector<Point3> normal(points);
+  std::vector<vcg::Color4b> colour(points);
+  std::vector<vcg::TexCoord2d> tex(points);
+  std::vector<double> quality(points);
+  for (int v = 0; v < sourceVertices_; ++v)
+    normal[v] = source.vert[v].cN(), colour[v] = source.vert[v].cC(), tex[v] = source.vert[v].cT(), quality[v] = source.vert[v].cQ();
+  for (int n = sourceVertices_; n < points; ++n) {
+    const int a = parents_[n - sourceVertices_][0], b = parents_[n - sourceVertices_][1];
+    normal[n] = (normal[a] + normal[b]).Normalize();
+    colour[n].lerp(colour[a], colour[b], 0.5f);
+    tex[n] = tex[a];
+    tex[n].U() = (tex[a].U() + tex[b].U()) / 2;
+    tex[n].V() = (tex[a].V() + tex[b].V()) / 2;
+    quality[n] = (quality[a] + quality[b]) / 2;
+  }
+  // Points in use: the source's vertices that are not left without faces, the added
+  // points that some face uses.
+  std::vector<char> used(points, 0), usedBefore(sourceVertices_, 0);
+  for (int f = 0; f < sourceFaces_; ++f)
+    for (int c = 0; c < 3; ++c) usedBefore[tris_[f].v[c]] = 1;
+  for (const Tri &t : tris_)
+    if (t.state == kAlive)
+      for (int c = 0; c < 3; ++c) used[t.v[c]] = 1;
+  auto firstAdded = vcg::tri::Allocator<Mesh>::AddVertices(cut, points - sourceVertices_);
+  (void)firstAdded;
+  for (int n = sourceVertices_; n < points; ++n) {
+    Vertex &v = cut.vert[n];
+    v.P() = sourcePosition_[n], v.N() = normal[n], v.C() = colour[n], v.T() = tex[n], v.Q() = quality[n];
+  }
+  // Faces: the source's that stay as they are, then the new ones with the data of the
+  // source face they lie in (wedge texture coordinates interpolated).
+  for (int f = 0; f < sourceFaces_; ++f)
+    if (tris_[f].state != kAlive) vcg::tri::Allocator<Mesh>::DeleteFace(cut, cut.face[f]);
+  int added = 0;
+  for (std::size_t n = sourceFaces_; n < tris_.size(); ++n) added += tris_[n].state == kAlive;
+  auto face = vcg::tri::Allocator<Mesh>::AddFaces(cut, added);
+  for (std::size_t n = sourceFaces_; n < tris_.size(); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state != kAlive) continue;
+    const Face &root = source.face[t.root];
+    face->ImportData(root);
+    for (int c = 0; c < 3; ++c) {
+      face->V(c) = &cut.vert[t.v[c]];
+      vcg::TexCoord2d w = root.cWT(0);
+      w.U() = w.V() = 0;
+      for (int r = 0; r < 3; ++r) w.U() += t.bary[c][r] * root.cWT(r).U(), w.V() += t.bary[c][r] * root.cWT(r).V();
+      face->WT(c) = w;
+    }
+    ++face;
+  }
+  std::vector<Point3> images;
+  for (int n = 0; n < points; ++n) {
+    const bool keep = n < sourceVertices_ ? used[n] || !usedBefore[n] : used[n];
+    if (keep) images.push_back(position[n]);
+    else vcg::tri::Allocator<Mesh>::DeleteVertex(cut, cut.vert[n]);
+  }
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(cut);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);
+  vcg::tri::UpdateBounding<Mesh>::Box(cut);
+  vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(cut);
+  return images;
+}
+
+int FillHoles(Mesh &cut, Mesh &filled) {
+  filled.Clear();
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(filled, cut, false, false);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(filled);
+  const int n = vcg::tri::Hole<Mesh>::EarCuttingFill<vcg::tri::MinimumWeightEar<Mesh>>(filled, INT_MAX, false);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(filled);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(filled);
+  vcg::tri::UpdateBounding<Mesh>::Box(filled);
+  vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(filled);
+  return n;
+}
+
+} // namespace eulermap

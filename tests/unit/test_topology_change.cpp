@@ -1,0 +1,362 @@
+// Topology change (issue 3): saddle detection (saddle.h) on analytic fields, and the whole
+// pipeline between surfaces of different genus or number of components, checked by the
+// exact topology of the cut source (DESIGN.md: expected topology after surgery) and by
+// the map's measured quality (report.h, MapQuality).
+#include "core/saddle.h"
+#include "core/surgery.h"
+#include "core/topology.h"
+#include "tests/support/meshes.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/selection.h>
+#include <vcg/complex/append.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace eulermap;
+using namespace eulermap::testing;
+
+namespace {
+
+// A 16^3-node grid over [-1, 1]^3 and V(x) = A (x - c) on its nodes (trilinear = exact).
+VectorField LinearField(const double A[3][3], const Point3 &c) {
+  Grid g;
+  g.origin = Point3(-1, -1, -1);
+  g.h = 2.0 / 15;
+  g.dims = vcg::Point3i(16, 16, 16);
+  VectorField V(g, Point3(0, 0, 0));
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) {
+    const Point3 d = g.Node(i, j, k) - c;
+    for (int r = 0; r < 3; ++r) V.values[n][r] = A[r][0] * d[0] + A[r][1] * d[1] + A[r][2] * d[2];
+  });
+  return V;
+}
+
+// Two meshes as one (components side by side).
+void Join(Mesh &m, Mesh &other) {
+  vcg::tri::Append<Mesh, Mesh>::Mesh(m, other);
+  vcg::tri::UpdateBounding<Mesh>::Box(m);
+  vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(m);
+}
+
+// A closed surface of revolution around the x axis, radius rho(x) for x in [-L, L]
+// (rho(+-L) = 0): rings denser near the poles, outward-oriented.
+template <class Profile> void MakeRevolution(Mesh &m, double L, Profile rho, int rings = 96, int around = 48) {
+  m.Clear();
+  auto v = vcg::tri::Allocator<Mesh>::AddVertices(m, rings * around + 2);
+  for (int i = 0; i < rings; ++i) {
+    const double x = -L * std::cos(M_PI * (i + 1) / (rings + 1));
+    for (int j = 0; j < around; ++j) {
+      const double a = 2 * M_PI * j / around;
+      m.vert[i * around + j].P() = Point3(x, rho(x) * std::cos(a), rho(x) * std::sin(a));
+    }
+  }
+  const int south = rings * around, north = south + 1;
+  m.vert[south].P() = Point3(-L, 0, 0);
+  m.vert[north].P() = Point3(L, 0, 0);
+  (void)v;
+  auto tri = [&](int a, int b, int c) {
+    auto f = vcg::tri::Allocator<Mesh>::AddFaces(m, 1);
+    f->V(0) = &m.vert[a], f->V(1) = &m.vert[b], f->V(2) = &m.vert[c];
+  };
+  for (int j = 0; j < around; ++j) {
+    const int j1 = (j + 1) % around;
+    tri(south, j1, j);
+    tri(north, (rings - 1) * around + j, (rings - 1) * around + j1);
+    for (int i = 0; i + 1 < rings; ++i) {
+      tri(i * around + j, i * around + j1, (i + 1) * around + j1);
+      tri(i * around + j, (i + 1) * around + j1, (i + 1) * around + j);
+    }
+  }
+  vcg::tri::UpdateBounding<Mesh>::Box(m);
+  vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(m);
+}
+
+// Two balls of radius R centred at (+-c, 0, 0) joined by a neck of radius `neck`.
+void MakeDumbbell(Mesh &m, double c, double R, double neck) {
+  const double L = c + R;
+  MakeRevolution(m, L, [=](double x) {
+    const double d = std::abs(x) - c;
+    const double ball = std::max(R * R - d * d, 0.0);
+    const double bump = std::exp(-std::pow(x / (c - R + 0.3), 2) * 4);
+    return std::sqrt(ball + neck * neck * bump * (std::abs(x) < L ? 1 : 0));
+  });
+}
+
+struct Figures {
+  Topology topology;
+  Result result;
+  // The saddle kinds of the events that cut.
+  std::vector<int> CutKinds() const {
+    std::vector<int> kinds;
+    for (const HoleEvent &h : result.report.holes) kinds.push_back(result.report.saddles[h.saddle].expandingDirections);
+    return kinds;
+  }
+};
+
+void MapBetween(Mesh &source, Mesh &target, int cells, Figures &out, Align align = Align::None) {
+  Options options;
+  options.align = align;
+  options.gridResolution = cells;
+  options.fillHoles = true;
+  ComputeMap(source, target, {}, options, out.result);
+  std::printf("%s", out.result.report.ToText().c_str());
+  out.topology = MeasureTopology(out.result.cut);
+  std::printf("cut source: genus %d, %d vertices (the source has %d)\n", out.topology.Genus(), out.result.cut.vn, source.vn);
+}
+
+// Topology of each connected component of m, largest first.
+std::vector<Topology> PerComponent(Mesh &m) {
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
+  std::vector<std::pair<int, Face *>> pieces;
+  vcg::tri::Clean<Mesh>::ConnectedComponents(m, pieces);
+  std::sort(pieces.begin(), pieces.end(), [](auto &a, auto &b) { return a.first > b.first; });
+  std::vector<Topology> out;
+  for (auto &piece : pieces) {
+    vcg::tri::UpdateSelection<Mesh>::FaceClear(m);
+    piece.second->SetS();
+    vcg::tri::UpdateSelection<Mesh>::FaceConnectedFF(m);
+    Mesh part;
+    vcg::tri::Append<Mesh, Mesh>::Mesh(part, m, true);
+    out.push_back(MeasureTopology(part));
+  }
+  vcg::tri::UpdateSelection<Mesh>::FaceClear(m);
+  return out;
+}
+
+// Mapped positions (TargetPosition) of the cut source's boundary vertices.
+std::vector<Point3> RimImages(Mesh &cut) {
+  auto target = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
+  std::vector<char> seen(cut.vert.size(), 0);
+  std::vector<Point3> rim;
+  for (Face &f : cut.face)
+    for (int e = 0; e < 3; ++e)
+      if (!f.IsD() && vcg::face::IsBorder(f, e))
+        for (int c : {e, (e + 1) % 3}) {
+          const std::size_t v = vcg::tri::Index(cut, f.V(c));
+          if (!seen[v]) seen[v] = 1, rim.push_back(target[v]);
+        }
+  return rim;
+}
+
+} // namespace
+
+TEST(SaddleFinder, FindsTheSaddlesOfLinearFields) {
+  const Point3 c(0.13, -0.21, 0.07);  // inside a cell, not on a node
+  const double one[3][3] = {{1, 0.3, 0}, {0, -1, 0.2}, {0, 0, -0.5}};  // one expanding direction
+  const double two[3][3] = {{1, 0, 0}, {0, 0.5, 0}, {0.3, 0, -2}};     // two
+  for (auto *A : {one, two}) {
+    const std::vector<Saddle> s = FindSaddles(LinearField(A, c));
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_LT(vcg::Distance(s[0].position, c), 1e-9);
+    EXPECT_EQ(s[0].expandingDirections, A == one ? 1 : 2);
+  }
+  // A sink, a source and a rotation about a sink are no saddles.
+  const double sink[3][3] = {{-1, 0, 0}, {0, -2, 0}, {0, 0, -1}};
+  const double source[3][3] = {{1, 0, 0}, {0, 2, 0}, {0, 0, 1}};
+  const double spiral[3][3] = {{-0.1, -1, 0}, {1, -0.1, 0}, {0, 0, -1}};
+  for (auto *A : {sink, source, spiral}) EXPECT_TRUE(FindSaddles(LinearField(A, c)).empty());
+  // Nearly degenerate (a rate 1% of the largest, as along a ring of zeros): no saddle.
+  const double ring[3][3] = {{1, 0, 0}, {0, 0.01, 0}, {0, 0, -1}};
+  EXPECT_TRUE(FindSaddles(LinearField(ring, c)).empty());
+  // A saddle on a grid node (found from its 8 cells) is one saddle.
+  const std::vector<Saddle> onNode = FindSaddles(LinearField(one, Point3(-1 + 7 * 2.0 / 15, -1 + 2.0 / 15, -1 + 9 * 2.0 / 15)));
+  EXPECT_EQ(onNode.size(), 1u);
+}
+
+// f(p) = |p - c|^2 - s on V's grid: critical at c, with f(c) = -s.
+ScalarField CriticalAt(const Grid &g, const Point3 &c, double s) {
+  ScalarField f(g, 0.0);
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) { f.values[n] = vcg::SquaredDistance(g.Node(i, j, k), c) - s; });
+  return f;
+}
+
+TEST(Surgery, FarSaddleCutsNothingAndPersistentSaddleIsOneEvent) {
+  Mesh sphere;
+  MakeSphere(sphere, Point3(0, 0, 0), 0.5, 3);
+  std::vector<Point3> tracked;
+  for (const Vertex &v : sphere.vert) tracked.push_back(v.cP());
+  const double A[3][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};  // one expanding direction
+  const double cell = LinearField(A, Point3(0, 0, 0)).grid.h;
+
+  // A saddle far from the surface (2.6 cells), seen over 10 steps while it drifts a little.
+  Surgery far(sphere, cell, cell);
+  for (int k = 0; k < 10; ++k) {
+    const Point3 c(0.85, 0.02 * k, 0.0);
+    const VectorField V = LinearField(A, c);
+    ASSERT_EQ(FindSaddles(V).size(), 1u);
+    far.Step(k, V, CriticalAt(V.grid, c, 1e-4), 0.1, tracked);
+  }
+  ASSERT_EQ(far.Saddles().size(), 1u);
+  EXPECT_FALSE(far.Saddles()[0].cut);
+  EXPECT_EQ(far.Saddles()[0].step, 0);
+  EXPECT_EQ(far.Saddles()[0].expandingDirections, 1);
+  Mesh cut;
+  std::vector<HoleEvent> holes;
+  EXPECT_EQ(far.Build(sphere, tracked, cut, holes).size(), sphere.vert.size());
+  EXPECT_TRUE(holes.empty());
+  EXPECT_EQ(cut.fn, sphere.fn);
+
+  // The same saddle on the surface cuts one disc, where f is critical...
+  const Point3 c(0.52, 0.01, 0.02);
+  Surgery near(sphere, cell, cell);
+  near.Step(0, LinearField(A, c), CriticalAt(LinearField(A, c).grid, c, 1e-4), 0.1, tracked);
+  ASSERT_EQ(near.Saddles().size(), 1u);
+  EXPECT_TRUE(near.Saddles()[0].cut);
+  const std::vector<Point3> images = near.Build(sphere, tracked, cut, holes);
+  EXPECT_EQ(images.size(), cut.vert.size());
+  EXPECT_LT(cut.vn, sphere.vn);
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_GT(holes[0].facesRemoved, 0);
+  EXPECT_GT(holes[0].rimLength, 0);
+  const Topology t = MeasureTopology(cut);
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.boundaryLoops, 1);
+  EXPECT_EQ(t.eulerCharacteristic, 1);
+  // ... and nothing where f is regular (a zero of V passing through a moving surface).
+  Surgery regular(sphere, cell, cell);
+  regular.Step(0, LinearField(A, c), CriticalAt(LinearField(A, c).grid, Point3(0, 0, 0), 0.25), 0.1, tracked);
+  EXPECT_FALSE(regular.Saddles()[0].cut);
+}
+
+// Two sheets that part before they reach the saddle: when the level set passes it (f
+// changes sign there), the faces its stable line pierces on each side go.
+TEST(Surgery, LevelPassingTheSaddleCutsWhereTheStableLinePierces) {
+  Mesh sphere;
+  MakeSphere(sphere, Point3(0, 0, 0), 0.5, 3);
+  std::vector<Point3> tracked;
+  for (const Vertex &v : sphere.vert) tracked.push_back(v.cP());
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};  // two expanding directions, stable along z
+  const VectorField V = LinearField(A, Point3(0.01, 0.02, 0.03));  // 3.5 to 4 cells from either pole
+  const std::vector<Saddle> found = FindSaddles(V);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NEAR(std::abs(found[0].stable.Z()), 1, 1e-9);
+  const double cell = V.grid.h;
+  Surgery surgery(sphere, cell, cell);
+  surgery.Step(0, V, CriticalAt(V.grid, found[0].position, -0.03), 0.1, tracked);  // f > 0 at the saddle
+  EXPECT_FALSE(surgery.Saddles()[0].cut);
+  surgery.Step(1, V, CriticalAt(V.grid, found[0].position, 0.03), 0.1, tracked);   // f < 0: the level passed
+  ASSERT_EQ(surgery.Saddles().size(), 1u);
+  EXPECT_TRUE(surgery.Saddles()[0].cut);
+  EXPECT_EQ(surgery.Saddles()[0].step, 1);
+  Mesh cut;
+  std::vector<HoleEvent> holes;
+  surgery.Build(sphere, tracked, cut, holes);
+  const Topology t = MeasureTopology(cut);  // both poles go: an annulus (sphere -> torus)
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  EXPECT_EQ(t.eulerCharacteristic, 0);
+}
+
+// Fig. 5: a sphere becomes a torus; two discs go, one from each side of the axis.
+TEST(TopologyChange, SphereToTorus) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1.0, 4);
+  const double R = 1.0, r = 0.4;
+  MakeTorus(target, Point3(0, 0, 0), R, r);
+  Figures f;
+  MapBetween(source, target, 48, f);
+  const Report &rep = f.result.report;
+  EXPECT_EQ(f.topology.components, 1);
+  EXPECT_EQ(f.topology.Genus(), 0);
+  EXPECT_EQ(f.topology.boundaryLoops, 2);
+  EXPECT_EQ(f.topology.eulerCharacteristic, 0);
+  EXPECT_EQ(f.CutKinds(), std::vector<int>({2}));  // two sheets meet on the axis
+  for (const Point3 &p : RimImages(f.result.cut)) EXPECT_LT(std::hypot(p.X(), p.Y()), R);
+  const Topology filled = MeasureTopology(f.result.filled);  // tri::Hole closes both loops: a sphere
+  EXPECT_EQ(filled.boundaryLoops, 0);
+  EXPECT_EQ(filled.eulerCharacteristic, 2);
+  EXPECT_GE(rep.quality.onSurfaceRate, 0.99);
+  EXPECT_GE(rep.quality.coverage, 0.95);
+  EXPECT_LE(rep.quality.longestEdgeCells, 3.0);
+}
+
+// A torus becomes a sphere: a band around the handle goes, leaving an annulus.
+TEST(TopologyChange, TorusToSphere) {
+  Mesh source, target;
+  MakeTorus(source, Point3(0, 0, 0), 1.0, 0.4);
+  MakeSphere(target, Point3(0, 0, 0), 1.2, 4);
+  Figures f;
+  MapBetween(source, target, 48, f);
+  EXPECT_EQ(f.CutKinds(), std::vector<int>({1}));  // the hole closes: a neck pinches
+  EXPECT_EQ(f.topology.components, 1);
+  EXPECT_EQ(f.topology.Genus(), 0);
+  EXPECT_EQ(f.topology.boundaryLoops, 2);
+  EXPECT_EQ(f.topology.eulerCharacteristic, 0);
+  EXPECT_GE(f.result.report.quality.onSurfaceRate, 0.99);
+}
+
+// Two spheres merge into one ellipsoid: each loses one disc.
+TEST(TopologyChange, TwoSpheresMerge) {
+  Mesh source, other, target;
+  MakeSphere(source, Point3(-1, 0, 0), 0.8, 4);
+  MakeSphere(other, Point3(1, 0, 0), 0.8, 4);
+  Join(source, other);
+  MakeEllipsoid(target, Point3(0, 0, 0), Point3(2, 1, 1), 5);
+  Figures f;
+  MapBetween(source, target, 48, f);
+  EXPECT_EQ(f.CutKinds(), std::vector<int>({2}));
+  EXPECT_EQ(f.topology.components, 2);
+  EXPECT_EQ(f.topology.Genus(), 0);
+  EXPECT_EQ(f.topology.boundaryLoops, 2);
+  EXPECT_EQ(f.topology.eulerCharacteristic, 2);
+  for (const Topology &part : PerComponent(f.result.cut)) {  // each a disc
+    EXPECT_EQ(part.boundaryLoops, 1);
+    EXPECT_EQ(part.eulerCharacteristic, 1);
+  }
+  EXPECT_GE(f.result.report.quality.onSurfaceRate, 0.99);
+}
+
+// A dumbbell splits into two spheres: its neck goes, one loop on each side.
+TEST(TopologyChange, DumbbellSplits) {
+  Mesh source, target, other;
+  MakeDumbbell(source, 1.3, 1.0, 0.35);
+  MakeSphere(target, Point3(-1.3, 0, 0), 0.95, 4);
+  MakeSphere(other, Point3(1.3, 0, 0), 0.95, 4);
+  Join(target, other);
+  Figures f;
+  MapBetween(source, target, 64, f);
+  EXPECT_EQ(f.CutKinds(), std::vector<int>({1}));
+  EXPECT_EQ(f.topology.components, 2);
+  EXPECT_EQ(f.topology.Genus(), 0);
+  EXPECT_EQ(f.topology.boundaryLoops, 2);
+  EXPECT_EQ(f.topology.eulerCharacteristic, 2);
+  for (const Topology &part : PerComponent(f.result.cut)) {  // each a disc
+    EXPECT_EQ(part.boundaryLoops, 1);
+    EXPECT_EQ(part.eulerCharacteristic, 1);
+  }
+  EXPECT_GE(f.result.report.quality.onSurfaceRate, 0.99);
+}
+
+// rocker-arm.obj (genus 1) becomes a sphere: a band around its handle goes.
+TEST(TopologyChange, RockerArmToSphere) {
+  Mesh source, target;
+  LoadMesh(DataMesh("rocker-arm.obj"), source);
+  MakeSphere(target, Point3(0, 0, 0), 1.0, 5);
+  Figures f;
+  MapBetween(source, target, 64, f, Align::CentreAndScale);
+  EXPECT_EQ(f.topology.components, 1);
+  EXPECT_EQ(f.topology.Genus(), 0);
+  EXPECT_EQ(f.topology.boundaryLoops, 2);
+  EXPECT_EQ(f.topology.eulerCharacteristic, 0);
+  EXPECT_GE(f.result.report.quality.onSurfaceRate, 0.98);
+}
+
+// A sphere around 3holes.off (genus 3) becomes it: two discs per handle.
+TEST(TopologyChange, SphereToThreeHoles) {
+  Mesh source, target;
+  LoadMesh(DataMesh("3holes.off"), target);
+  MakeSphere(source, target.bbox.Center(), 0.55 * target.bbox.Diag(), 5);
+  Figures f;
+  MapBetween(source, target, 64, f);
+  EXPECT_EQ(f.topology.components, 1);
+  EXPECT_EQ(f.topology.Genus(), 0);
+  EXPECT_EQ(f.topology.boundaryLoops, 6);
+  EXPECT_EQ(f.topology.eulerCharacteristic, -4);
+  EXPECT_GE(f.result.report.quality.onSurfaceRate, 0.98);
+}
