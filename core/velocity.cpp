@@ -39,7 +39,12 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
         b_[idx] = g * -((fk1.values[idx] - fk.values[idx]) / dt);
         if (withPrior) b_[idx] += prior.values[idx] * beta_[idx];
       }
-  VelocitySolve s = method_ == Method::ConjugateGradient ? SolveConjugateGradient(V) : SolveGaussSeidel(V);
+  const double bNorm = std::sqrt(Dot(b_, b_));
+  VelocitySolve s;
+  if (bNorm == 0)  // no motion: V = 0 solves (*) exactly
+    std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
+  else
+    s = method_ == Method::ConjugateGradient ? SolveConjugateGradient(V, bNorm) : SolveGaussSeidel(V, bNorm);
   g_.clear();
   g_.shrink_to_fit();
   beta_.clear();
@@ -76,14 +81,9 @@ double VelocitySolver::Residual(const VectorField &V, std::vector<Point3> &r) co
   return std::sqrt(Dot(r, r));
 }
 
-VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V) {
+VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V, double bNorm) {
   const std::size_t n = grid_.NodeCount();
-  const double bNorm = std::sqrt(Dot(b_, b_));
   VelocitySolve s;
-  if (bNorm == 0) {
-    std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
-    return s;
-  }
   std::vector<Point3> r(n), z(n), p(n), q(n);
   double rNorm = Residual(V, r);
   // z = M^-1 r with M the 3x3 diagonal blocks g g^T + (alpha n_i + beta) I (Sherman-Morrison).
@@ -123,14 +123,9 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V) {
   return s;
 }
 
-VelocitySolve VelocitySolver::SolveGaussSeidel(VectorField &V) {
+VelocitySolve VelocitySolver::SolveGaussSeidel(VectorField &V, double bNorm) {
   const std::size_t n = grid_.NodeCount();
-  const double bNorm = std::sqrt(Dot(b_, b_));
   VelocitySolve s;
-  if (bNorm == 0) {
-    std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
-    return s;
-  }
   std::vector<Point3> r(n);
   const vcg::Point3i d = grid_.dims;
   const long sx = 1, sy = d.X(), sz = long(d.X()) * d.Y();

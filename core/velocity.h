@@ -52,8 +52,9 @@ class VelocitySolver {
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
 
  private:
-  VelocitySolve SolveConjugateGradient(VectorField &V);
-  VelocitySolve SolveGaussSeidel(VectorField &V);
+  // Both need bNorm = ||b|| > 0.
+  VelocitySolve SolveConjugateGradient(VectorField &V, double bNorm);
+  VelocitySolve SolveGaussSeidel(VectorField &V, double bNorm);
   // r = b - A V, returns ||r||.
   double Residual(const VectorField &V, std::vector<Point3> &r) const;
   // out = A x (the operator of (*)).
