@@ -11,6 +11,12 @@
 
 namespace eulermap {
 
+// Zero of a field's value type. vcg::Point3's default constructor leaves its coordinates
+// uninitialised, so Point3() is not zero (a stack garbage value here made the tracker
+// lose points inside MeshLab, where the stack is not fresh).
+template <class Value> Value Zero() { return Value(0); }
+template <> inline Point3 Zero<Point3>() { return Point3(0, 0, 0); }
+
 template <class Value> struct Field {
   Grid grid;
   std::vector<Value> values;  // one per node, in Grid::Index order
@@ -26,7 +32,7 @@ template <class Value> struct Field {
     int c[3];
     double w[3];
     Locate(p, c, w);
-    Value r = Value();
+    Value r = Zero<Value>();
     for (int dk = 0; dk < 2; ++dk)
       for (int dj = 0; dj < 2; ++dj)
         for (int di = 0; di < 2; ++di) {

@@ -11,16 +11,30 @@
 
 namespace eulermap {
 
+// Texture coordinates that start at (0,0), index 0. vcglib's TexCoord2 leaves them
+// uninitialised, and a mesh read from a file without them would carry garbage that
+// DetectTexCoords (transfer.h) takes for coordinates.
+template <class T> class ZeroTexCoord2d : public vcg::vertex::TexCoord2d<T> {
+ public:
+  ZeroTexCoord2d() { this->T() = vcg::TexCoord2d(0, 0); }
+};
+template <class T> class ZeroWedgeTexCoord2d : public vcg::face::WedgeTexCoord2d<T> {
+ public:
+  ZeroWedgeTexCoord2d() {
+    for (int c = 0; c < 3; ++c) this->WT(c) = vcg::TexCoord2d(0, 0);
+  }
+};
+
 class Vertex;
 class Face;
 struct UsedTypes : public vcg::UsedTypes<vcg::Use<Vertex>::AsVertexType, vcg::Use<Face>::AsFaceType> {};
 
 class Vertex : public vcg::Vertex<UsedTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d,
                                   vcg::vertex::BitFlags, vcg::vertex::Qualityd, vcg::vertex::Color4b,
-                                  vcg::vertex::TexCoord2d, vcg::vertex::VFAdj, vcg::vertex::Mark> {};
+                                  ZeroTexCoord2d, vcg::vertex::VFAdj, vcg::vertex::Mark> {};
 
 class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::BitFlags,
-                              vcg::face::WedgeTexCoord2d, vcg::face::FFAdj, vcg::face::VFAdj, vcg::face::Mark> {};
+                              ZeroWedgeTexCoord2d, vcg::face::FFAdj, vcg::face::VFAdj, vcg::face::Mark> {};
 
 class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
 

@@ -178,6 +178,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   Mesh &cut = result.cut;
   const std::vector<Point3> images = surgery.Build(source, tracked, cut, rep.holes);
   rep.saddles = surgery.Saddles();
+  rep.pointsAdded = surgery.PointsAdded();
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
   std::vector<ClosestHit> hits(images.size());
 #pragma omp parallel for schedule(static)
@@ -215,6 +216,8 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;
   rep.cutEulerCharacteristic = topo.eulerCharacteristic;
+  rep.cutVertices = cut.vn;
+  rep.cutFaces = cut.fn;
   rep.times.quality = Seconds(t0);
   rep.peakMemoryKiB = PeakMemoryKiB();
   report(1.0, "done");

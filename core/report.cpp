@@ -36,8 +36,10 @@ std::string Report::ToText() const {
   o << Format("holes cut: %zu\n", holes.size());
   for (const HoleEvent &h : holes)
     o << Format("  hole at saddle %d: %d faces removed, rim length %.4g\n", h.saddle, h.facesRemoved, h.rimLength);
-  o << Format("cut source: %d component%s, %d boundary loop%s, Euler characteristic %d\n", cutComponents,
-              cutComponents == 1 ? "" : "s", cutBoundaryLoops, cutBoundaryLoops == 1 ? "" : "s", cutEulerCharacteristic);
+  o << Format("cut source: %d component%s, %d boundary loop%s, Euler characteristic %d; %d vertices (%d added by "
+              "surgery), %d faces\n",
+              cutComponents, cutComponents == 1 ? "" : "s", cutBoundaryLoops, cutBoundaryLoops == 1 ? "" : "s",
+              cutEulerCharacteristic, cutVertices, pointsAdded, cutFaces);
   o << Format("times (s): SDF %.3f, INT %.3f, VF %.3f, DEF %.3f, total %.3f (quality measures %.3f)\n", times.sdf,
               times.interp, times.velocity, times.deform, times.Total(), times.quality);
   o << Format("map quality: on-surface %.2f%%, coverage %.2f%%, flipped area %.2f%%, longest mapped edge %.2f cells, "

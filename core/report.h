@@ -53,7 +53,7 @@ struct HoleEvent {
 };
 
 struct Report {
-  vcg::Point3i gridNodes;
+  vcg::Point3i gridNodes = vcg::Point3i(0, 0, 0);
   double cellSize = 0;
   int steps = 0;
   double alpha = 0;
@@ -69,6 +69,8 @@ struct Report {
   std::vector<SaddleEvent> saddles;
   std::vector<HoleEvent> holes;
   int untangledVertices = 0;  // vertices moved by untangle.h
+  int cutVertices = 0, cutFaces = 0;
+  int pointsAdded = 0;        // vertices surgery added where rims opened (surgery.h, step 4)
   int cutBoundaryLoops = 0;
   int cutEulerCharacteristic = 0;
   int cutComponents = 0;

@@ -53,9 +53,6 @@ SAMPLE_RUNS = [
     ("spot_to_cow", "spot.ply", "cow.off", dict(components=1, loops=0, chi=2, anchors="spot.pp")),
     ("rocker-arm_to_sphere", "rocker-arm.ply", "sphere.ply", dict(components=1, loops=2, chi=0)),
 ]
-# Sample runs whose source and target differ in topology: they need saddle surgery
-# (issue 3), which has not landed yet; reported as skipped until it does.
-NEEDS_SURGERY = {"sphere_to_torus", "torus_to_sphere", "rocker-arm_to_sphere"}
 
 
 class Failure(Exception):
@@ -265,7 +262,20 @@ def test_map_meshes_script():
     check("steps: 8" in report, "report.txt does not show --steps 8")
     c, m = meshes.read_mesh(os.path.join(outdir, "cut.ply")), meshes.read_mesh(os.path.join(outdir, "mapped.ply"))
     check(len(c.verts) == len(m.verts) and c.faces == m.faces, "cut.ply and mapped.ply differ in vertex order or faces")
-    check(0 < len(c.verts) <= 2048, f"cut.ply has {len(c.verts)} vertices, the torus 2048")
+    # The cut torus: as many vertices and faces, and the same topology, as the report says
+    # (surgery removes faces and adds points where rims open), mapped onto the sphere.
+    m_cut = re.search(r"cut source: (\d+) components?, (\d+) boundary loops?, Euler characteristic (-?\d+); "
+                      r"(\d+) vertices \((\d+) added by surgery\), (\d+) faces", report)
+    check(m_cut, "report.txt has no 'cut source: ...' line")
+    comps, loops, chi, nv, added, nf = map(int, m_cut.groups())
+    check((len(c.verts), len(c.faces)) == (nv, nf),
+          f"cut.ply has {len(c.verts)} vertices, {len(c.faces)} faces; the report says {nv}, {nf}")
+    check(meshes.topology(c) == (comps, loops, chi),
+          f"cut.ply: components, loops, chi {meshes.topology(c)}; the report says {(comps, loops, chi)}")
+    check(len(c.verts) <= 2048 + added, f"cut.ply has {len(c.verts)} vertices: more than the torus's 2048 + {added} added")
+    sphere = meshes.read_mesh(os.path.join(SAMPLES, "sphere.ply"))
+    rate = meshes.on_surface_rate(m.verts, sphere, 0.005 * meshes.diagonal(sphere.verts))
+    check(rate >= 0.99, f"only {100 * rate:.2f}% of mapped.ply lies on the sphere")
 
 
 # Bad inputs: (name, inputs, script values, expected message part). Small grids, so a
@@ -378,17 +388,13 @@ def main():
     tmp = tempfile.mkdtemp(prefix="eulermap-meshlab-")
     tests = [("plugin_installed", test_plugin_installed), ("meshlabserver_lists_filter", test_meshlabserver_lists_filter),
              ("sample_scripts_complete", test_sample_scripts_complete)]
-    tests += [("sample_" + n, None if n in NEEDS_SURGERY else make_sample_test(n, s, t, e)) for n, s, t, e in SAMPLE_RUNS]
+    tests += [("sample_" + n, make_sample_test(n, s, t, e)) for n, s, t, e in SAMPLE_RUNS]
     tests += [("map_meshes_script", test_map_meshes_script)]
     tests += [("bad_input_" + n, make_bad_input_test(n, i, v, e, tmp)) for n, i, v, e in bad_inputs(tmp)]
     tests += [("gui", test_gui), ("inputs_unchanged", test_inputs_unchanged)]
-    passed = failed = skipped = 0
+    passed = failed = 0
     for name, fn in tests:
         if args.k not in name:
-            continue
-        if fn is None:
-            skipped += 1
-            print(f"SKIP {name}: needs saddle surgery (issue 3)", flush=True)
             continue
         t0 = time.time()
         try:
@@ -402,7 +408,7 @@ def main():
             failed += 1
             print(f"FAIL {name}: error\n{traceback.format_exc()}", flush=True)
     shutil.rmtree(tmp, ignore_errors=True)
-    print(f"{passed} passed, {failed} failed, {skipped} skipped")
+    print(f"{passed} passed, {failed} failed")
     return 1 if failed else 0
 
 
