@@ -11,9 +11,9 @@
 namespace eulermap {
 
 struct Grid {
-  Point3 origin;          // position of node (0,0,0)
+  Point3 origin = Point3(0, 0, 0);  // position of node (0,0,0)
   double h = 1;           // node spacing (one grid cell)
-  vcg::Point3i dims;      // node counts per axis
+  vcg::Point3i dims = vcg::Point3i(0, 0, 0);  // node counts per axis
 
   // The common box of `box`, padded by `padCells` cells on every side, with
   // `cellsOnLongestAxis` cells across the box's longest side (DESIGN.md: grid.h).

@@ -41,7 +41,7 @@ struct Options {
   double anchorWeight = 10;  // beta at an anchor: pull of its motion on V (velocity.h); 0: the paper's Eq. 2
   double anchorRadius = 3;   // reach of that pull, in grid cells
   Align align = Align::CentreAndScale;  // placement when there are no anchors
-  VelocitySolver::Method solver = VelocitySolver::Method::ConjugateGradient;
+  VelocitySolver::Method solver = VelocitySolver::Method::Multigrid;
   double tolerance = 1e-4;   // relative residual that ends a velocity solve
   int maxIterations = 500;   // per step
   bool untangle = true;      // relax folded places of the map on the target (untangle.h)

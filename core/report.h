@@ -60,7 +60,7 @@ struct Report {
   int anchors = 0;
   std::string morphMode;    // Morph::Describe()
   std::string placement;    // how the target was placed in the source's frame
-  std::string solver;       // "PCG" / "Gauss-Seidel"
+  std::string solver;       // the velocity solver (VelocitySolver::Method)
   int threads = 1;
   int sourceVertices = 0;
   SolverFigures solverFigures;

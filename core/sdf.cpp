@@ -33,12 +33,13 @@
 // matters there, but the numbers are also meant to be read.
 #include "sdf.h"
 
-#include "closest.h"
+#include "distance_transform.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 namespace eulermap {
@@ -249,24 +250,98 @@ bool WindingNumber::Inside(const Point3 &p) const {
   return (*this)(p) >= 0.5;
 }
 
-// in:  mesh — triangle mesh, closed or with holes (bounding box and face normals are
-//      updated, for the closest-point index); grid — the lattice
-// out: f(node) = +/- distance to the nearest surface point (ClosestPoint), negative where
-//      the generalized winding number is >= 1/2 (DESIGN.md: sdf.h). Nodes are evaluated
-//      in parallel (OpenMP).
-ScalarField SignedDistance(Mesh &mesh, const Grid &grid) {
-  ScalarField f(grid, 0.0);
-  const ClosestPoint closest(mesh);
-  const WindingNumber winding(mesh);
-  const std::int64_t count = std::int64_t(grid.NodeCount());
-  const std::int64_t nx = grid.dims.X(), nxy = nx * grid.dims.Y();
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::int64_t n = 0; n < count; ++n) {
-    const int k = int(n / nxy), j = int((n % nxy) / nx), i = int(n % nx);
-    const Point3 p = grid.Node(i, j, k);
-    const double d = closest.Query(p).distance;  // 0 for an empty mesh
-    f.values[n] = winding.Inside(p) ? -d : d;
+namespace {
+
+// Whether the faces form a closed surface (a 2-cycle): every edge used as often in one
+// direction as in the other. Then the winding number is a whole number, constant on each
+// connected piece of space minus the surface.
+bool IsClosed(const Mesh &mesh) {
+  std::unordered_map<std::uint64_t, int> balance;  // per undirected edge: uses a->b minus b->a (a < b)
+  for (const Face &f : mesh.face) {
+    if (f.IsD()) continue;
+    for (int e = 0; e < 3; ++e) {
+      const std::uint64_t a = vcg::tri::Index(mesh, f.cV(e)), b = vcg::tri::Index(mesh, f.cV((e + 1) % 3));
+      balance[a < b ? (a << 32 | b) : (b << 32 | a)] += a < b ? 1 : -1;
+    }
   }
+  return std::all_of(balance.begin(), balance.end(), [](const auto &e) { return e.second == 0; });
+}
+
+// in:  the unsigned distance d at every node, the mesh's winding number, closed (IsClosed)
+// out: per node, whether it lies inside (winding number >= 1/2)
+// An open mesh: the winding number at every node. A closed one: at the nodes next to the
+// surface only, then flooded. A grid edge (m, n) with d(m) + d(n) > h crosses no face (a
+// crossing point x would give d(m) + d(n) <= |m - x| + |x - n| = h), so both ends lie in
+// the same piece of space and have the same winding number; nodes whose every edge is
+// like that take the value of a node they reach through such edges.
+std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, bool closed) {
+  const Grid &grid = d.grid;
+  const std::size_t count = grid.NodeCount();
+  const vcg::Point3i &dims = grid.dims;
+  std::vector<char> inside(count, 0);
+  if (!closed) {
+#pragma omp parallel for schedule(dynamic, 256)
+    for (long n = 0; n < long(count); ++n) {
+      const int i = int(n % dims.X()), j = int(n / dims.X() % dims.Y()), k = int(n / (long(dims.X()) * dims.Y()));
+      inside[n] = winding.Inside(grid.Node(i, j, k));
+    }
+    return inside;
+  }
+  const long stride[3] = {1, long(dims.X()), long(dims.X()) * dims.Y()};
+  const double h = grid.h * (1 + 1e-9);
+  auto forEachNeighbour = [&](long n, auto &&fn) {
+    const int c[3] = {int(n % dims.X()), int(n / dims.X() % dims.Y()), int(n / stride[2])};
+    for (int a = 0; a < 3; ++a) {
+      if (c[a] > 0) fn(n - stride[a]);
+      if (c[a] + 1 < dims[a]) fn(n + stride[a]);
+    }
+  };
+  constexpr char kUnknown = -1;
+  std::vector<char> state(count, kUnknown);  // 0 / 1: known outside / inside
+  // Nodes with an edge that may cross the surface: the winding number itself.
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long n = 0; n < long(count); ++n) {
+    bool near = false;
+    forEachNeighbour(n, [&](long m) { near = near || d.values[n] + d.values[m] <= h; });
+    if (!near) continue;
+    const int i = int(n % dims.X()), j = int(n / dims.X() % dims.Y()), k = int(n / stride[2]);
+    state[n] = winding.Inside(grid.Node(i, j, k));
+  }
+  // Flood across edges that cross nothing; a piece with no node near the surface (none,
+  // unless the mesh lies outside the grid) gets one evaluation.
+  std::vector<long> queue;
+  for (long n = 0; n < long(count); ++n)
+    if (state[n] != kUnknown) queue.push_back(n);
+  for (long seed = 0;; ++seed) {
+    while (!queue.empty()) {
+      const long n = queue.back();
+      queue.pop_back();
+      forEachNeighbour(n, [&](long m) {
+        if (state[m] == kUnknown && d.values[n] + d.values[m] > h) state[m] = state[n], queue.push_back(m);
+      });
+    }
+    while (seed < long(count) && state[seed] != kUnknown) ++seed;
+    if (seed == long(count)) break;
+    const int i = int(seed % dims.X()), j = int(seed / dims.X() % dims.Y()), k = int(seed / stride[2]);
+    state[seed] = winding.Inside(grid.Node(i, j, k));
+    queue.push_back(seed);
+  }
+  for (std::size_t n = 0; n < count; ++n) inside[n] = state[n];
+  return inside;
+}
+
+} // namespace
+
+// in:  mesh — triangle mesh, closed or with holes; grid — the lattice
+// out: f(node) = +/- distance to the nearest surface point (distance_transform.h),
+//      negative where the generalized winding number is >= 1/2 (DESIGN.md: sdf.h).
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid) {
+  ScalarField f = UnsignedDistance(mesh, grid);
+  const WindingNumber winding(mesh);
+  const std::vector<char> inside = Inside(f, winding, IsClosed(mesh));
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(f.values.size()); ++n)
+    if (inside[n]) f.values[n] = -f.values[n];
   return f;
 }
 

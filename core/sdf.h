@@ -2,8 +2,8 @@
 //
 // SignedDistance(mesh, grid)
 //   in:  a triangle mesh (closed, or with small holes) and the grid
-//   out: per node, the distance to the nearest surface point (ClosestPoint, closest.h),
-//        negative inside. Inside means generalized winding number >= 1/2,
+//   out: per node, the distance to the nearest surface point (UnsignedDistance,
+//        distance_transform.h), negative inside. Inside means generalized winding number >= 1/2,
 //        so a mesh with a hole (camelhead.off) still has a sensible inside.
 // WindingNumber: the generalized winding number of Jacobson et al. 2013, evaluated
 //   hierarchically (far triangle clusters as dipoles, Barill et al. 2018).
@@ -30,6 +30,6 @@ class WindingNumber {
   std::unique_ptr<Tree> tree_;
 };
 
-ScalarField SignedDistance(Mesh &mesh, const Grid &grid);
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid);
 
 } // namespace eulermap

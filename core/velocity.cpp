@@ -43,14 +43,22 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   VelocitySolve s;
   if (bNorm == 0)  // no motion: V = 0 solves (*) exactly
     std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
-  else
-    s = method_ == Method::ConjugateGradient ? SolveConjugateGradient(V, bNorm) : SolveGaussSeidel(V, bNorm);
-  g_.clear();
-  g_.shrink_to_fit();
-  beta_.clear();
-  beta_.shrink_to_fit();
-  b_.clear();
-  b_.shrink_to_fit();
+  else if (method_ == Method::GaussSeidel)
+    s = SolveGaussSeidel(V, bNorm);
+  else if (method_ == Method::ConjugateGradient)
+    s = SolveConjugateGradient(V, bNorm, [this](const std::vector<Point3> &r, std::vector<Point3> &z) { BlockJacobi(r, z); });
+  else {
+    if (!multigrid_ || multigrid_->Dims() != grid_.dims) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
+    std::vector<Sym3> &data = multigrid_->Data();  // D_i = g g^T + beta_i I
+#pragma omp parallel for schedule(static)
+    for (long m = 0; m < long(n); ++m) {
+      const Point3 &g = g_[m];
+      const double b = Beta(m);
+      data[m] = {g[0] * g[0] + b, g[0] * g[1], g[0] * g[2], g[1] * g[1] + b, g[1] * g[2], g[2] * g[2] + b};
+    }
+    multigrid_->Update();
+    s = SolveConjugateGradient(V, bNorm, [&](const std::vector<Point3> &r, std::vector<Point3> &z) { multigrid_->Precondition(r, z); });
+  }
   return s;
 }
 
@@ -81,24 +89,27 @@ double VelocitySolver::Residual(const VectorField &V, std::vector<Point3> &r) co
   return std::sqrt(Dot(r, r));
 }
 
-VelocitySolve VelocitySolver::SolveConjugateGradient(VectorField &V, double bNorm) {
+void VelocitySolver::BlockJacobi(const std::vector<Point3> &r, std::vector<Point3> &z) const {
+  // (g g^T + c I)^-1 = (I - g g^T / (c + |g|^2)) / c (Sherman-Morrison).
+  const vcg::Point3i d = grid_.dims;
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < d.Z(); ++k)
+    for (int j = 0; j < d.Y(); ++j)
+      for (int i = 0; i < d.X(); ++i) {
+        const std::size_t idx = grid_.Index(i, j, k);
+        const double c = alpha_ * Neighbours(i, j, k) + Beta(idx);
+        const Point3 &g = g_[idx];
+        z[idx] = (r[idx] - g * ((g * r[idx]) / (c + g.SquaredNorm()))) / c;
+      }
+}
+
+VelocitySolve VelocitySolver::SolveConjugateGradient(
+    VectorField &V, double bNorm, const std::function<void(const std::vector<Point3> &, std::vector<Point3> &)> &precondition) {
   const std::size_t n = grid_.NodeCount();
   VelocitySolve s;
-  std::vector<Point3> r(n), z(n), p(n), q(n);
+  r_.resize(n), z_.resize(n), p_.resize(n), q_.resize(n);
+  std::vector<Point3> &r = r_, &z = z_, &p = p_, &q = q_;
   double rNorm = Residual(V, r);
-  // z = M^-1 r with M the 3x3 diagonal blocks g g^T + (alpha n_i + beta) I (Sherman-Morrison).
-  auto precondition = [&](const std::vector<Point3> &in, std::vector<Point3> &out) {
-    const vcg::Point3i d = grid_.dims;
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < d.Z(); ++k)
-      for (int j = 0; j < d.Y(); ++j)
-        for (int i = 0; i < d.X(); ++i) {
-          const std::size_t idx = grid_.Index(i, j, k);
-          const double c = alpha_ * Neighbours(i, j, k) + Beta(idx);
-          const Point3 &g = g_[idx];
-          out[idx] = (in[idx] - g * ((g * in[idx]) / (c + g.SquaredNorm()))) / c;
-        }
-  };
   precondition(r, z);
   p = z;
   double rz = Dot(r, z);

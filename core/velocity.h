@@ -24,11 +24,16 @@
 //   - Gauss-Seidel, the paper's update (Eq. 5, derived from (*) with one alpha, by the
 //     Sherman-Morrison formula): V_i = Vbar - g (g . Vbar + f_t) / (alpha n_i + |g|^2),
 //     Vbar = sum_j V_j / n_i; red-black ordering so that both colours run in parallel;
-//   - conjugate gradients preconditioned by the exact inverse of each node's 3x3 block.
-// Both start from the V passed in (the previous step's: a warm start).
+//   - conjugate gradients preconditioned by the exact inverse of each node's 3x3 block;
+//   - conjugate gradients preconditioned by a multigrid V-cycle (multigrid.h), the default.
+// All start from the V passed in (the previous step's: a warm start).
 #pragma once
 
 #include "field.h"
+#include "multigrid.h"
+
+#include <functional>
+#include <memory>
 
 namespace eulermap {
 
@@ -39,7 +44,7 @@ struct VelocitySolve {
 
 class VelocitySolver {
  public:
-  enum class Method { ConjugateGradient, GaussSeidel };
+  enum class Method { Multigrid, ConjugateGradient, GaussSeidel };
 
   VelocitySolver(double alpha, Method method, double tolerance, int maxIterations)
       : alpha_(alpha), method_(method), tolerance_(tolerance), maxIterations_(maxIterations) {}
@@ -52,24 +57,30 @@ class VelocitySolver {
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
 
  private:
-  // Both need bNorm = ||b|| > 0.
-  VelocitySolve SolveConjugateGradient(VectorField &V, double bNorm);
+  // Both need bNorm = ||b|| > 0. precondition(r, z): z = M^-1 r.
+  VelocitySolve SolveConjugateGradient(
+      VectorField &V, double bNorm, const std::function<void(const std::vector<Point3> &, std::vector<Point3> &)> &precondition);
   VelocitySolve SolveGaussSeidel(VectorField &V, double bNorm);
   // r = b - A V, returns ||r||.
   double Residual(const VectorField &V, std::vector<Point3> &r) const;
   // out = A x (the operator of (*)).
   void Apply(const std::vector<Point3> &x, std::vector<Point3> &out) const;
   int Neighbours(int i, int j, int k) const;
+  // z = the exact inverse of each node's block g g^T + (alpha n_i + beta_i) I times r.
+  void BlockJacobi(const std::vector<Point3> &r, std::vector<Point3> &z) const;
   double Beta(std::size_t idx) const { return beta_.empty() ? 0 : beta_[idx]; }
 
   double alpha_;
   Method method_;
   double tolerance_;
   int maxIterations_;
-  // Per-step data of (*): g and b = -g f_t per node (held only during Solve).
+  // Per-step data of (*): g and b = -g f_t per node.
   Grid grid_;
   std::vector<Point3> g_, b_;
   std::vector<double> beta_;  // prior weights (empty: none)
+  // Kept from step to step (same grid): the multigrid levels and the CG vectors.
+  std::unique_ptr<BlockMultigrid> multigrid_;
+  std::vector<Point3> r_, z_, p_, q_;
 };
 
 } // namespace eulermap

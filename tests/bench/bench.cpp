@@ -2,8 +2,9 @@
 // on any two mesh files. One invocation measures one configuration (so that the peak
 // memory figure is that configuration's own); tests/bench/run collects the table.
 //
-//   eulermap_bench row N [--threads T] [--solver cg|gs]   one of the four Table 1 rows (N = 1..4)
+//   eulermap_bench row N [--threads T] [--solver mg|cg|gs]   one of the four Table 1 rows (N = 1..4)
 //   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a CELLS^3 grid
+//   eulermap_bench vertices S                               sphere of S subdivisions -> ellipsoid, 64 cells
 //   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N]
 //   options of every mode: --alpha A --anchor-weight B (velocity.h)
 //
@@ -102,7 +103,12 @@ Options OptionsFrom(int argc, char **argv) {
   o.gridResolution = Flag(argc, argv, "--grid", o.gridResolution);
   o.steps = Flag(argc, argv, "--steps", o.steps);
   for (int i = 0; i + 1 < argc; ++i)
-    if (!std::strcmp(argv[i], "--solver") && !std::strcmp(argv[i + 1], "gs")) o.solver = VelocitySolver::Method::GaussSeidel;
+    if (!std::strcmp(argv[i], "--solver")) {
+      const std::string s = argv[i + 1];
+      o.solver = s == "gs" ? VelocitySolver::Method::GaussSeidel
+                 : s == "cg" ? VelocitySolver::Method::ConjugateGradient
+                             : VelocitySolver::Method::Multigrid;
+    }
   return o;
 }
 
@@ -138,6 +144,13 @@ int main(int argc, char **argv) {
       options.align = Align::None;
       ComputeMap(source, target, anchors, options, result);
       PrintRow(std::string("grid ") + argv[2] + "^3", result.report, 0);
+    } else if (mode == "vertices") {
+      const int subdivisions = std::atoi(argv[2]);
+      MakeSphere(source, Point3(0, 0, 0), 1, subdivisions);
+      MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.4, 0.8, 0.9), 5);
+      options.align = Align::None;
+      ComputeMap(source, target, anchors, options, result);
+      PrintRow(std::string("sphere, ") + argv[2] + " subdivisions", result.report, 0);
     } else if (mode == "map") {
       LoadMesh(argv[2], source);
       LoadMesh(argv[3], target);

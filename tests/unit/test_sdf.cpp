@@ -9,12 +9,14 @@
 #include <vcg/complex/algorithms/update/topology.h>
 #include <vcg/space/distance3.h>
 #include <vcg/space/segment3.h>
+#include <vcg/space/triangle3.h>
 #include <vcg/simplex/face/distance.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <queue>
 #include <random>
 #include <vector>
@@ -194,7 +196,10 @@ TEST(SignedDistance, SphereMatchesAnalyticWithinFacetingError) {
     // The faceted sphere lies in the shell r - eps <= |x - c| <= r, eps = r minus the
     // smallest distance from c to a face's plane (its vertices lie on the sphere). Then
     // for a node outside the shell, | |p-c| - r - f(p) | <= eps (the radial ray crosses the
-    // facets inside the shell), and at most 2 eps inside it.
+    // facets inside the shell), and at most 2 eps inside it. That holds for the exact
+    // distance, which the propagation gives within one cell of the surface; farther away it
+    // may take a face up to a third of a cell farther than the nearest (distance_transform.h;
+    // the centre of a sphere, where all faces are nearly as near, is the worst case: 0.30 cells).
     double eps = 0;
     for (const Face &f : m.face) {
       const Point3 n = ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Normalize();
@@ -209,7 +214,8 @@ TEST(SignedDistance, SphereMatchesAnalyticWithinFacetingError) {
       const double truth = (p - c).Norm() - r;
       const double err = std::abs(f.values[idx] - truth);
       maxErr = std::max(maxErr, err);
-      EXPECT_LE(err, (truth > 0 || truth < -eps ? eps : 2 * eps) + 1e-12) << "node " << i << " " << j << " " << k;
+      const double bound = (truth > 0 || truth < -eps ? eps : 2 * eps) + (std::abs(truth) > g.h ? 0.35 * g.h : 0);
+      EXPECT_LE(err, bound + 1e-12) << "node " << i << " " << j << " " << k;
       if (std::abs(truth) > g.h) {
         ++checkedSign;
         if ((f.values[idx] < 0) != (truth < 0)) ++wrongSign;
@@ -385,19 +391,50 @@ TEST(SignedDistance, CamelheadOpenMeshHasConsistentInside) {
   EXPECT_GT(WindingNumber(m)(centroid), 0.9);
 }
 
-TEST(SignedDistance, Speed64CubedOnSharedMeshes) {
-  for (const char *name : {"camelhead.off", "bunny.off"}) {
+// The propagated distance (distance_transform.h) against a search per node (closest.h):
+// exact within one cell of the surface (seeded), never below the truth, and off by a small
+// part of a cell where it is off at all (near the medial axis). The sign flooded from the
+// nodes next to a closed surface against the winding number at every node.
+TEST(SignedDistance, PropagatedDistanceMatchesSearch) {
+  for (const char *name : {"bunny.off", "camelhead.off", "decimated-knight.off"}) {
     Mesh m;
     LoadMesh(DataMesh(name), m);
-    const Grid g = Grid::WithNodes(m.bbox, vcg::Point3i(64, 64, 64));
+    const Grid g = Grid::Enclosing(m.bbox, 64);
     const auto t0 = std::chrono::steady_clock::now();
     const ScalarField f = SignedDistance(m, g);
     const double seconds = Seconds(t0);
-    int negatives = 0;
-    for (double v : f.values) negatives += v < 0;
-    std::printf("[ figures  ] %s (%d faces): 64^3 SDF in %.2f s (%d threads available), %.1f%% nodes inside\n", name, m.fn,
-                seconds, omp_get_max_threads(), 100.0 * negatives / f.values.size());
-    EXPECT_LT(seconds, 10);  // a guard against gross regressions (the build machine is shared); the figure is the report
+    const ClosestPoint closest(m);
+    const WindingNumber winding(m);
+    std::vector<double> errors;
+    int below = 0, nearOff = 0, wrongSign = 0;
+    g.ForEachNode([&](int i, int j, int k, std::size_t idx) {
+      const Point3 p = g.Node(i, j, k);
+      double truth = closest.Query(p).distance;
+      const double got = std::abs(f.values[idx]);
+      if (got < truth - 1e-12) {  // vcglib's point-triangle test (the search's) errs by up to ~1e-3 cells: brute force
+        truth = std::numeric_limits<double>::max();
+        for (const Face &t : m.face) {
+          double dist;
+          Point3 q;
+          vcg::TrianglePointDistance(vcg::Triangle3<double>(t.cP(0), t.cP(1), t.cP(2)), p, dist, q);
+          truth = std::min(truth, dist);
+        }
+        below += got < truth - 1e-12;
+      }
+      if (truth <= g.h) nearOff += got > truth + 1e-3 * g.h;
+      errors.push_back((got - truth) / g.h);
+      wrongSign += (f.values[idx] < 0) != winding.Inside(p);
+    });
+    std::sort(errors.begin(), errors.end());
+    const double p999 = errors[errors.size() * 999 / 1000], worst = errors.back();
+    const long off = std::count_if(errors.begin(), errors.end(), [](double e) { return e > 1e-3; });
+    std::printf("[ figures  ] %s, %zu nodes: SDF %.2f s; distance off at %.3f%% of nodes, 99.9th percentile %.1e "
+                "cells, max %.1e cells; sign differs from the winding number at %d nodes\n",
+                name, errors.size(), seconds, 100.0 * off / errors.size(), p999, worst, wrongSign);
+    EXPECT_EQ(below, 0);
+    EXPECT_EQ(nearOff, 0);
+    EXPECT_LT(worst, 0.35);
+    EXPECT_EQ(wrongSign, 0);
   }
 }
 

@@ -52,24 +52,27 @@ double Residual(const ScalarField &fk, const ScalarField &fk1, double dt, const 
 
 } // namespace
 
-TEST(Velocity, BothSolversReachTheToleranceAndAgree) {
+// The three solvers of velocity.h reach the tolerance on the true residual and give the
+// same field; multigrid needs the fewest iterations (a V-cycle costs about 5 CG iterations).
+TEST(Velocity, AllSolversReachTheToleranceAndAgree) {
   const Grid grid = UnitGrid(32);
   const double dt = 1.0 / 40, alpha = 2;
   const ScalarField fk = GrowingSphere(grid, 8, 6, 0.5), fk1 = GrowingSphere(grid, 8, 6, 0.5 + dt);
-  VectorField cg, gs;
+  VectorField mg, cg, gs;
+  const VelocitySolve sm = VelocitySolver(alpha, VelocitySolver::Method::Multigrid, 1e-6, 2000).Solve(fk, fk1, dt, mg);
   const VelocitySolve sc = VelocitySolver(alpha, VelocitySolver::Method::ConjugateGradient, 1e-6, 2000).Solve(fk, fk1, dt, cg);
   const VelocitySolve sg = VelocitySolver(alpha, VelocitySolver::Method::GaussSeidel, 1e-6, 20000).Solve(fk, fk1, dt, gs);
-  EXPECT_LE(sc.residual, 1e-6);
-  EXPECT_LE(sg.residual, 1e-6);
-  EXPECT_LE(Residual(fk, fk1, dt, cg, alpha), 1.01e-6);
-  EXPECT_LE(Residual(fk, fk1, dt, gs, alpha), 1.01e-6);
+  for (const VelocitySolve &s : {sm, sc, sg}) EXPECT_LE(s.residual, 1e-6);
+  for (const VectorField *v : {&mg, &cg, &gs}) EXPECT_LE(Residual(fk, fk1, dt, *v, alpha), 1.01e-6);
   double worst = 0, largest = 0;
   for (std::size_t n = 0; n < cg.values.size(); ++n) {
-    worst = std::max(worst, (cg.values[n] - gs.values[n]).Norm());
+    worst = std::max({worst, (cg.values[n] - gs.values[n]).Norm(), (mg.values[n] - cg.values[n]).Norm()});
     largest = std::max(largest, cg.values[n].Norm());
   }
   EXPECT_LE(worst, 1e-3 * largest);
-  std::printf("CG: %d iterations, GS: %d sweeps, largest difference %.2e of %.3g\n", sc.iterations, sg.iterations, worst, largest);
+  EXPECT_LT(sm.iterations * 5, sc.iterations);
+  std::printf("multigrid-CG: %d iterations, block-Jacobi CG: %d iterations, GS: %d sweeps, largest difference %.2e of %.3g\n",
+              sm.iterations, sc.iterations, sg.iterations, worst, largest);
 }
 
 TEST(Velocity, WarmStartNeedsFewerIterations) {
