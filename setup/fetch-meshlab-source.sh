@@ -4,6 +4,8 @@
 # it is. Usage: setup/fetch-meshlab-source.sh VERSION_PREFIX DEST_DIR
 #   VERSION_PREFIX  e.g. 2020.09+dfsg1 (bookworm) or 2025.07~dfsg (sid)
 #   DEST_DIR        where the unpacked tree ends up (DEST_DIR/meshlab-<upstream version>)
+# When the pool lacks the .dsc or Debian's patches but has the upstream tarball, that
+# tarball (checked against the Sources index) is unpacked alone.
 # Prints the unpacked tree's path on its last line. Safe to run twice.
 set -euo pipefail
 want="$1"; dest="$2"
@@ -25,7 +27,26 @@ if [ -z "$version" ]; then
   exit 1
 fi
 cd "$dest"
-apt-get "${apt_opts[@]}" -q source "meshlab=$version" >&2
+if ! apt-get "${apt_opts[@]}" -q source "meshlab=$version" >&2; then
+  # Debian's pool sometimes lacks a listed .dsc/.debian.tar.xz (sid's 2025.07~dfsg-4 gives
+  # 404 for both) while the upstream tarball is there; apt has then fetched that tarball.
+  # Its headers are all the build needs: check it against the hash in the signed Sources
+  # index and unpack it as meshlab-<upstream version> (its own top folder is meshlab-<git sha>).
+  upstream="${version%-*}"
+  orig="$(ls "meshlab_${upstream}".orig.tar.* 2>/dev/null | head -n 1 || true)"
+  sha="$(apt-cache "${apt_opts[@]}" showsrc meshlab | awk -v v="$version" -v f="$orig" '
+    /^Version:/ { mine = ($2 == v) }
+    /^[^ ]/ { sums = mine && /^Checksums-Sha256:/; next }
+    sums && $3 == f { print $1 }')"
+  if [ -z "$orig" ] || [ -z "$sha" ] || ! echo "$sha  $orig" | sha256sum -c --status; then
+    echo "error: apt-get source meshlab=$version failed, and $dest holds no upstream tarball meshlab_${upstream}.orig.tar.* matching Debian's Sources index" >&2
+    exit 1
+  fi
+  echo "note: Debian's pool lacks part of meshlab $version (see apt's errors above); using its verified upstream tarball $orig alone (Debian's patches are not applied: only the headers are used)" >&2
+  rm -rf "meshlab-$upstream"
+  mkdir "meshlab-$upstream"
+  tar -xf "$orig" -C "meshlab-$upstream" --strip-components=1
+fi
 unpacked="$(find_tree)"
 [ -n "$unpacked" ] || { echo "error: apt-get source left no meshlab-$want* tree in $dest" >&2; exit 1; }
 touch "$unpacked/.eulermap-complete"
