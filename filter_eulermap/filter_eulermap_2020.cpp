@@ -1,36 +1,18 @@
 #include "filter_eulermap_2020.h"
 
-#include "map_layers.h"
+#include "run_on_layers.h"
 
 using namespace eulermap::plugin;
 
 namespace {
 
-void ToInput(MeshModel &m, InputLayer &layer) {
-  layer.label = m.label();
-  layer.fileName = m.fullName();
-  layer.has.vertexTexCoords = m.hasDataMask(MeshModel::MM_VERTTEXCOORD);
-  layer.has.wedgeTexCoords = m.hasDataMask(MeshModel::MM_WEDGTEXCOORD);
-  LayerToCore(m.cm, layer.has, layer.mesh);
-}
-
-// A new layer holding `mesh`; with `targetPositions`, their vertices become its
-// per-vertex attribute "TargetPosition". The current layer stays as it is.
-MeshModel *AddLayer(MeshDocument &md, const QString &label, const eulermap::Mesh &mesh, const LayerComponents &has,
-                    const eulermap::Mesh *targetPositions) {
-  MeshModel *m = md.addNewMesh("", label, false);
-  int mask = MeshModel::MM_VERTQUALITY;
-  if (has.wedgeTexCoords) mask |= MeshModel::MM_WEDGTEXCOORD;
-  if (has.vertexTexCoords) mask |= MeshModel::MM_VERTTEXCOORD;
-  m->updateDataMask(mask);
-  CoreToLayer(mesh, has, m->cm);
-  if (targetPositions) {
-    auto target = vcg::tri::Allocator<CMeshO>::GetPerVertexAttribute<Point3m>(m->cm, "TargetPosition");
-    size_t i = 0;
-    for (const eulermap::Vertex &v : targetPositions->vert)
-      if (!v.IsD() && i < m->cm.vert.size()) target[m->cm.vert[i++]].Import(v.cP());
-  }
-  return m;
+// The document's layers, numbered by their position (as .mlx scripts and RichMesh do).
+LayerDocument<MeshModel> Layers(MeshDocument &md) {
+  LayerDocument<MeshModel> doc;
+  for (int i = 0; i < md.size(); ++i) doc.layers.push_back(i);
+  doc.layer = [&md](int i) { return md.meshList.at(i); };
+  doc.add = [&md](const QString &label) { return md.addNewMesh("", label, false); };
+  return doc;
 }
 
 }  // namespace
@@ -60,13 +42,9 @@ int FilterEulermapPlugin::getPreConditions(QAction *) const { return MeshModel::
 int FilterEulermapPlugin::postCondition(QAction *) const { return MeshModel::MM_NONE; }
 
 void FilterEulermapPlugin::initParameterSet(QAction *, MeshDocument &md, RichParameterList &parameters) {
+  const LayerDocument<MeshModel> layers = Layers(md);
   MeshModel *current = md.mm();
-  MeshModel *other = current;
-  for (MeshModel *m : md.meshList)
-    if (m != current) {
-      other = m;
-      break;
-    }
+  MeshModel *other = current ? layers.layer(DefaultTargetLayer(md.meshList.indexOf(current), layers.layers)) : nullptr;
   MeshDocument *doc = current ? &md : nullptr;  // RichMesh asserts on a layer not in the document
   for (const ParameterSpec &p : Parameters()) {
     switch (p.kind) {
@@ -110,48 +88,13 @@ bool FilterEulermapPlugin::applyFilter(QAction *, MeshDocument &md, const RichPa
     return {};
   });
   auto log = [this](const QString &line) { Log(GLLogStream::FILTER, line.toStdString()); };
-  // meshlabserver prints the log but not errorMessage: say it in both.
-  auto fail = [&](const QString &message) {
-    errorMessage = message;
-    Log(GLLogStream::WARNING, ("Eulerian Surface Map failed: " + message).toStdString());
-    return false;
-  };
-  int lastPercent = -1;
-  QString lastStage;
-  const ProgressFn progress = [&](int percent, const QString &stage) {
-    if (!cb || (percent == lastPercent && stage == lastStage)) return true;
-    lastPercent = percent;
-    lastStage = stage;
-    return cb(percent, qUtf8Printable(stage));
-  };
-
-  QString error;
-  if (!CheckLayerChoice(request, md.size(), error)) return fail(error);
-  progress(0, "Eulerian map: copying layers");
-  InputLayer source, target;
-  ToInput(*md.meshList.at(request.sourceLayer), source);
-  ToInput(*md.meshList.at(request.targetLayer), target);
-
   eulermap::Result result;
-  QStringList lines;
-  const bool ok = MapLayers(request, source, target, progress, result, lines, error);
-  for (const QString &line : lines) log(line);
-  if (!ok) return fail(error);
-
-  progress(kProgressCoreEnd, "Eulerian map: making layers");
-  const LayerComponents out = OutputComponents(request, source, target);
-  const QString cut = OutputLabel(source.label, "cut"), mapped = OutputLabel(source.label, "mapped");
-  log(LayerLine(AddLayer(md, cut, result.cut, out, &result.mapped)->label(), result.cut));
-  log(LayerLine(AddLayer(md, mapped, result.mapped, out, nullptr)->label(), result.mapped));
-  if (request.options.fillHoles) {
-    const QString filled = OutputLabel(source.label, "filled");
-    if (result.filled.FN() > 0)
-      log(LayerLine(AddLayer(md, filled, result.filled, out, nullptr)->label(), result.filled));
-    else
-      log("warning: fill_holes gave no faces, so no " + filled + " layer was made");
-  }
-  progress(100, "Eulerian map: done");
-  return true;
+  QString error;
+  if (RunOnLayers(request, Layers(md), MeshLabProgress(cb), log, result, error)) return true;
+  // meshlabserver prints the log but not errorMessage: say it in both.
+  errorMessage = error;
+  Log(GLLogStream::WARNING, ("Eulerian Surface Map failed: " + error).toStdString());
+  return false;
 }
 
 MESHLAB_PLUGIN_NAME_EXPORTER(FilterEulermapPlugin)

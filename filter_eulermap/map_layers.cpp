@@ -4,6 +4,7 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
 #include <new>
 
 namespace eulermap::plugin {
@@ -48,16 +49,20 @@ QStringList Lines(const std::string &text) {
 
 }  // namespace
 
-bool CheckLayerChoice(const Request &request, int layers, QString &error) {
-  if (layers < 2 || request.targetLayer < 0) {
+bool CheckLayerChoice(const Request &request, const std::vector<int> &layers, QString &error) {
+  if (layers.size() < 2 || request.targetLayer < 0) {
     error = "no target mesh: load the surface to map onto as another layer and choose it as target_mesh";
     return false;
   }
-  if (request.sourceLayer < 0 || request.sourceLayer >= layers || request.targetLayer >= layers) {
-    error = QString("layer %1 does not exist (the document has layers 0..%2)")
-                .arg(request.sourceLayer < 0 || request.sourceLayer >= layers ? request.sourceLayer : request.targetLayer)
-                .arg(layers - 1);
-    return false;
+  QStringList names;
+  for (int n : layers) names << QString::number(n);
+  for (const auto &[parameter, layer] : {std::pair(param::kSourceMesh, request.sourceLayer),
+                                         std::pair(param::kTargetMesh, request.targetLayer)}) {
+    if (std::find(layers.begin(), layers.end(), layer) == layers.end()) {
+      error = QString("%1: layer %2 does not exist (the document has layers %3)")
+                  .arg(parameter).arg(layer).arg(names.join(", "));
+      return false;
+    }
   }
   if (request.sourceLayer == request.targetLayer) {
     error = "target_mesh is the source mesh itself: choose another layer as target_mesh (the surface to "
@@ -65,6 +70,12 @@ bool CheckLayerChoice(const Request &request, int layers, QString &error) {
     return false;
   }
   return true;
+}
+
+int DefaultTargetLayer(int current, const std::vector<int> &layers) {
+  for (int n : layers)
+    if (n != current) return n;
+  return current;
 }
 
 bool MapLayers(const Request &request, InputLayer &source, InputLayer &target, const ProgressFn &progress,
@@ -123,6 +134,39 @@ LayerComponents OutputComponents(const Request &request, const InputLayer &sourc
 
 QString LayerLine(const QString &label, const Mesh &mesh) {
   return QString("new layer %1: %2 vertices, %3 faces").arg(label).arg(mesh.VN()).arg(mesh.FN());
+}
+
+std::map<std::string, QVariant> ReportFigures(const Report &r) {
+  const MapQuality &q = r.quality;
+  int cuts = 0;
+  for (const SaddleEvent &s : r.saddles) cuts += s.cut ? 1 : 0;
+  return {
+      {"grid_cell_size", r.cellSize},
+      {"steps", r.steps},
+      {"anchors", r.anchors},
+      {"saddles", int(r.saddles.size())},
+      {"saddles_cut", cuts},
+      {"holes", int(r.holes.size())},
+      {"cut_vertices", r.cutVertices},
+      {"cut_faces", r.cutFaces},
+      {"cut_components", r.cutComponents},
+      {"cut_boundary_loops", r.cutBoundaryLoops},
+      {"cut_euler_characteristic", r.cutEulerCharacteristic},
+      {"points_added", r.pointsAdded},
+      {"on_surface_rate", q.onSurfaceRate},
+      {"coverage", q.coverage},
+      {"flipped_area_share", q.flippedAreaShare},
+      {"flipped_before_untangling", q.flippedBeforeUntangling},
+      {"longest_edge_cells", q.longestEdgeCells},
+      {"anchor_error_cells", q.anchorErrorCells},
+      {"mean_distortion", q.meanDistortion},
+      {"solver_iterations", double(r.solverFigures.totalIterations)},
+      {"time_sdf_s", r.times.sdf},
+      {"time_int_s", r.times.interp},
+      {"time_vf_s", r.times.velocity},
+      {"time_def_s", r.times.deform},
+      {"time_total_s", r.times.Total()},
+  };
 }
 
 }  // namespace eulermap::plugin

@@ -9,8 +9,12 @@
 
 #include <QString>
 #include <QStringList>
+#include <QVariant>
 
 #include <functional>
+#include <map>
+#include <string>
+#include <vector>
 
 namespace eulermap::plugin {
 
@@ -23,8 +27,13 @@ struct InputLayer {
 };
 
 // Checks the layer choice before anything is copied: a target given, other than the
-// source, both existing. `layers` is the number of layers in the document.
-bool CheckLayerChoice(const Request &request, int layers, QString &error);
+// source, both existing. `layers` are the numbers of the document's layers as the flavour
+// names them (the request's sourceLayer / targetLayer are such numbers).
+bool CheckLayerChoice(const Request &request, const std::vector<int> &layers, QString &error);
+
+// The default target_mesh: the first of `layers` other than `current`; `current` when there
+// is none (then CheckLayerChoice says that a target is missing).
+int DefaultTargetLayer(int current, const std::vector<int> &layers);
 
 // Percent in [0, 100] and what is being done; returns false to cancel.
 using ProgressFn = std::function<bool(int, const QString &)>;
@@ -48,5 +57,11 @@ LayerComponents OutputComponents(const Request &request, const InputLayer &sourc
 
 // "new layer spot_cut: 2930 vertices, 5856 faces", for the log.
 QString LayerLine(const QString &label, const Mesh &mesh);
+
+// The report's figures by snake_case name (on_surface_rate, coverage, cut_boundary_loops,
+// time_total_s, ...: see map_layers.cpp) as numbers (rates and shares in [0, 1], times in
+// seconds), for flavours whose filters return values (pymeshlab's apply_filter returns
+// them as a dict).
+std::map<std::string, QVariant> ReportFigures(const Report &report);
 
 }  // namespace eulermap::plugin

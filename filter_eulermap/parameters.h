@@ -55,7 +55,8 @@ QString FilterDescription();
 
 // What the user asked for, independent of the MeshLab flavour.
 struct Request {
-  int sourceLayer = -1;  // index into the document's layers; -1: none
+  int sourceLayer = -1;  // the layer's number as the flavour names layers (2020.09: its
+                         // position in the document, 2025.07: its id); -1: none
   int targetLayer = -1;
   Options options;
   QString sourceAnchors;  // .pp file; empty: the .pp beside the source's file, if any
@@ -64,7 +65,7 @@ struct Request {
 };
 
 // Reads every parameter through `value` (called once per ParameterSpec; Mesh parameters
-// must come back as the layer's index, -1 when none) into a Request.
+// must come back as the layer's number, as in Request, -1 when none) into a Request.
 Request ReadRequest(const std::function<QVariant(const ParameterSpec &)> &value);
 
 }  // namespace eulermap::plugin
