@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what the build needs (Debian packages), fetches Debian's meshlab source
-# package for the MeshLab/vcglib headers, and configures and builds into build/.
-# Safe to run twice: installed packages, the fetched tree and the build are reused.
+# packages for the MeshLab/vcglib headers (2020.09 from bookworm, 2025.07 from sid),
+# creates .venv with pymeshlab 2025.7.post1 and pytest, and configures and builds both
+# plugin flavours into build/. Safe to run twice: installed packages, the fetched trees,
+# the venv and the build are reused.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -28,7 +30,20 @@ esac
 echo "== fetching Debian source package meshlab 2020.09+dfsg1 (headers only; not committed)"
 src2020="$(bash setup/fetch-meshlab-source.sh 2020.09+dfsg1 "$root/.deps" | tail -n 1)"
 
+# The pymeshlab flavour: headers from Debian sid's meshlab 2025.07~dfsg, binaries from the
+# pymeshlab 2025.7.post1 wheel in .venv. Without them the 2020.09 flavour is still built.
+pymeshlab_flavour=()
+echo "== fetching Debian source package meshlab 2025.07~dfsg (headers only; not committed)"
+if src2025="$(bash setup/fetch-meshlab-source.sh 2025.07~dfsg "$root/.deps" | tail -n 1)" &&
+   echo "== creating .venv with pymeshlab 2025.7.post1 and pytest" &&
+   pymeshlab_dir="$(bash setup/pymeshlab-venv.sh | tail -n 1)"; then
+  pymeshlab_flavour=(-DEULERMAP_MESHLAB_2025_SOURCE="$src2025" -DEULERMAP_PYMESHLAB_LIB="$pymeshlab_dir/lib")
+else
+  echo "warning: no meshlab 2025.07 source or no pymeshlab venv (see above): building without the" \
+       "pymeshlab flavour (libfilter_eulermap_2025.so); its tests will fail" >&2
+fi
+
 echo "== configuring and building in build/"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DEULERMAP_MESHLAB_2020_SOURCE="$src2020" -DEULERMAP_BUILD_PLUGIN_2020=ON >/dev/null
+  -DEULERMAP_MESHLAB_2020_SOURCE="$src2020" -DEULERMAP_BUILD_PLUGIN_2020=ON "${pymeshlab_flavour[@]}" >/dev/null
 cmake --build build

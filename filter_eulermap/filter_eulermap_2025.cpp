@@ -1,0 +1,140 @@
+#include "filter_eulermap_2025.h"
+
+#include "run_on_layers.h"
+
+#include <common/mlexception.h>
+
+#include <algorithm>
+
+using namespace eulermap::plugin;
+
+namespace {
+
+// The document's layers, numbered by their id (pymeshlab's and 2025.07's RichMesh numbers;
+// pymeshlab passes any integer through, so a number may name no layer: CheckLayerChoice
+// says so before any is used).
+std::vector<int> LayerIds(const MeshDocument &md) {
+  std::vector<int> ids;
+  for (const MeshModel &m : md.meshIterator()) ids.push_back(m.id());
+  return ids;
+}
+
+LayerDocument<MeshModel> Layers(MeshDocument &md) {
+  LayerDocument<MeshModel> doc;
+  doc.layers = LayerIds(md);
+  doc.layer = [&md](int id) { return md.getMesh(id); };
+  doc.add = [&md](const QString &label) { return md.addNewMesh("", label, false); };
+  return doc;
+}
+
+// 2025.07 layers hold their texture images (2020.09 loads them when drawing): give each
+// layer made after `before` the images, from the first of `from` that has them, of the
+// texture names it carries (the target's when its texture was transferred, else the
+// source's), so that pymeshlab saves and shows the new layers with their textures.
+void CopyTextureImages(MeshDocument &md, const std::vector<int> &before, const std::vector<int> &from) {
+  for (MeshModel &m : md.meshIterator()) {
+    if (std::find(before.begin(), before.end(), m.id()) != before.end()) continue;
+    for (const std::string &name : m.cm.textures)
+      for (int id : from) {
+        const MeshModel *source = md.getMesh(id);
+        if (m.getTextures().count(name) || !source->getTextures().count(name)) continue;
+        m.addTexture(name, source->getTexture(name));
+      }
+  }
+}
+
+}  // namespace
+
+FilterEulermapPlugin::FilterEulermapPlugin() {
+  typeList = {FP_EULERIAN_MAP};
+  // FilterPlugin::ID() finds an action's filter by its text: it must be the filter's name.
+  for (ActionIDType t : types()) actionList.push_back(new QAction(filterName(t), this));
+}
+
+QString FilterEulermapPlugin::pluginName() const { return "FilterEulermap"; }
+
+QString FilterEulermapPlugin::filterName(ActionIDType) const { return FilterName(); }
+
+// pymeshlab's name, in its verb_object style (the name derived from the menu name would
+// be eulerian_surface_map).
+QString FilterEulermapPlugin::pythonFilterName(ActionIDType) const { return "generate_eulerian_surface_map"; }
+
+QString FilterEulermapPlugin::filterInfo(ActionIDType) const { return FilterDescription(); }
+
+// Remeshing, as in the 2020.09 flavour: new meshes whose connectivity and topology differ
+// from the inputs'. (pymeshlab refuses a plugin with a Generic filter.)
+FilterPlugin::FilterClass FilterEulermapPlugin::getClass(const QAction *) const { return FilterPlugin::Remeshing; }
+
+// Two layers, chosen by the source_mesh / target_mesh parameters.
+FilterPlugin::FilterArity FilterEulermapPlugin::filterArity(const QAction *) const { return FilterPlugin::FIXED; }
+
+int FilterEulermapPlugin::getPreConditions(const QAction *) const { return MeshModel::MM_NONE; }
+
+// The input layers are not changed; the results are new layers.
+int FilterEulermapPlugin::postCondition(const QAction *) const { return MeshModel::MM_NONE; }
+
+RichParameterList FilterEulermapPlugin::initParameterList(const QAction *, const MeshDocument &md) {
+  const std::vector<int> layers = LayerIds(md);
+  const int current = md.mm() ? md.mm()->id() : 0;
+  RichParameterList parameters;
+  for (const ParameterSpec &p : Parameters()) {
+    switch (p.kind) {
+    case ParameterKind::Mesh:
+      parameters.addParam(RichMesh(p.name, p.name == param::kSourceMesh ? current : DefaultTargetLayer(current, layers),
+                                   &md, p.label, p.help));
+      break;
+    case ParameterKind::Int:
+      parameters.addParam(RichInt(p.name, p.defaultValue.toInt(), p.label, p.help));
+      break;
+    case ParameterKind::Float:
+      parameters.addParam(RichFloat(p.name, p.defaultValue.toDouble(), p.label, p.help));
+      break;
+    case ParameterKind::Enum:
+      parameters.addParam(RichEnum(p.name, p.defaultValue.toInt(), p.choices, p.label, p.help));
+      break;
+    case ParameterKind::Bool:
+      parameters.addParam(RichBool(p.name, p.defaultValue.toBool(), p.label, p.help));
+      break;
+    case ParameterKind::OpenFile:
+      parameters.addParam(RichFileOpen(p.name, p.defaultValue.toString(), p.choices, p.label, p.help));
+      break;
+    case ParameterKind::String:
+      parameters.addParam(RichString(p.name, p.defaultValue.toString(), p.label, p.help));
+      break;
+    }
+  }
+  return parameters;
+}
+
+std::map<std::string, QVariant> FilterEulermapPlugin::applyFilter(const QAction *, const RichParameterList &parameters,
+                                                                  MeshDocument &md, unsigned int &,
+                                                                  vcg::CallBackPos *cb) {
+  const Request request = ReadRequest([&](const ParameterSpec &p) -> QVariant {
+    switch (p.kind) {
+    case ParameterKind::Mesh: return int(parameters.getMeshId(p.name));
+    case ParameterKind::Int: return parameters.getInt(p.name);
+    case ParameterKind::Float: return double(parameters.getFloat(p.name));
+    case ParameterKind::Enum: return parameters.getEnum(p.name);
+    case ParameterKind::Bool: return parameters.getBool(p.name);
+    case ParameterKind::OpenFile: return parameters.getOpenFileName(p.name);
+    case ParameterKind::String: return parameters.getString(p.name);
+    }
+    return {};
+  });
+  auto log = [this](const QString &line) { this->log(GLLogStream::FILTER, line.toStdString()); };
+  eulermap::Result result;
+  QString error;
+  const LayerDocument<MeshModel> layers = Layers(md);
+  if (!RunOnLayers(request, layers, MeshLabProgress(cb), log, result, error)) {
+    // pymeshlab 2025.7.post1 gives the plugin its MeshSet's log before applyFilter and takes
+    // it back only when applyFilter returns (helpers/meshset_helper.cpp): after a throw the
+    // plugin would go on logging into a MeshSet that Python may have freed. Drop it here.
+    setLog(nullptr);
+    // Reported as PyMeshLabException "Failed to apply filter: ...\nDetails: <message>".
+    throw MLException(error);
+  }
+  CopyTextureImages(md, layers.layers, {request.targetLayer, request.sourceLayer});
+  return ReportFigures(result.report);
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(FilterEulermapPlugin)
