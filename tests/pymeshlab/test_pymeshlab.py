@@ -1,0 +1,191 @@
+"""pymeshlab tests of the Eulerian Surface Map plugin's MeshLab 2025.07 flavour (issue 5).
+
+Run with the venv's pytest after building (tests/pymeshlab/run does both):
+    .venv/bin/python -m pytest tests/pymeshlab -v -s
+
+What it checks, in PyPI's pymeshlab 2025.7.post1 (.venv):
+  - pymeshlab.load_plugin() takes build/filter_eulermap/libfilter_eulermap_2025.so, and
+    pymeshlab lists and finds the filter, with the parameters of parameters.h;
+  - the sample runs of the MeshLab tests that pymeshlab shares (sphere -> torus, spot -> cow
+    with anchors), through samples/map_meshes.py's map_meshes(): the same checks as
+    tests/meshlab/run_tests.py (cut topology, >= 99% of the mapped vertices within 0.5% of
+    the target's diagonal, before and after the final projection, the log, the input layers
+    and files unchanged), and that the figures the filter returns agree with the files;
+  - samples/map_meshes.py as a command, with and without a failure;
+  - every bad input of the MeshLab tests, and layer ids that do not exist, raise
+    pymeshlab's PyMeshLabException carrying the filter's message.
+Outputs go to out/pymeshlab/ (kept).
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import pymeshlab
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.path[:0] = [os.path.join(ROOT, "samples"), os.path.join(ROOT, "tests", "meshlab")]
+import map_meshes  # noqa: E402  the sample script, as a module
+import meshes  # noqa: E402  the MeshLab tests' mesh reader and measures
+import run_tests  # noqa: E402  the MeshLab tests: their sample expectations and bad inputs
+
+SAMPLES = os.path.join(ROOT, "samples")
+OUT = os.path.join(ROOT, "out", "pymeshlab")
+FILTER = map_meshes.FILTER
+SAMPLE_RUNS = [run for run in run_tests.SAMPLE_RUNS if run[0] in ("sphere_to_torus", "spot_to_cow")]
+
+
+@pytest.fixture(scope="session", autouse=True)
+def plugin():
+    map_meshes.load_plugin()
+
+
+def mesh_set(*files):
+    ms = pymeshlab.MeshSet()
+    for f in files:
+        ms.load_new_mesh(f)
+    ms.set_current_mesh(0)
+    return ms
+
+
+def test_plugin_lists_filter(capfd):
+    assert FILTER in pymeshlab.filter_list()
+    pymeshlab.search("eulerian")
+    assert FILTER in capfd.readouterr().out, "pymeshlab.search('eulerian') does not find the filter"
+    ms = mesh_set(os.path.join(SAMPLES, "sphere.ply"))
+    assert list(ms.filter_parameter_values(FILTER)) == run_tests.plugin_parameter_names()
+
+
+@pytest.mark.parametrize("name,source,target,expect", SAMPLE_RUNS, ids=[run[0] for run in SAMPLE_RUNS])
+def test_sample(name, source, target, expect):
+    outdir = os.path.join(OUT, name)
+    shutil.rmtree(outdir, ignore_errors=True)
+    before = run_tests.sample_checksums()
+    src, tgt = os.path.join(SAMPLES, source), os.path.join(SAMPLES, target)
+    ms, figures, log = map_meshes.map_meshes(src, tgt, outdir)
+    assert run_tests.sample_checksums() == before, "the run changed files in samples/"
+
+    base = os.path.splitext(source)[0]
+    for line in ("Eulerian Surface Map: ", "grid: ", "times (s): ", "map quality: ", f"new layer {base}_cut: ",
+                 f"new layer {base}_mapped: "):
+        assert any(l.startswith(line) for l in log), f"the log lacks a '{line}...' line"
+    if "anchors" in expect:  # every active point of the .pp beside the source, at least 6
+        n = len(re.findall(r'<point [^>]*active="1"', open(os.path.join(SAMPLES, expect["anchors"])).read()))
+        assert n >= 6 and figures["anchors"] == n, f"{figures['anchors']} anchors used, {expect['anchors']} has {n}"
+        assert any(l.startswith(f"anchors: {n} named pairs") for l in log), f"the log does not report {n} pairs"
+
+    for layer, path in ((0, src), (1, tgt)):
+        a, m = meshes.read_mesh(path), ms.mesh(layer)
+        assert [tuple(f) for f in m.face_matrix()] == a.faces and np.allclose(m.vertex_matrix(), a.verts, atol=1e-6), \
+            f"the input layer {os.path.basename(path)} was changed by the filter"
+
+    c = meshes.read_mesh(os.path.join(outdir, "cut.ply"))
+    m = meshes.read_mesh(os.path.join(outdir, "mapped.ply"))
+    assert len(c.verts) == len(m.verts) and c.faces == m.faces, "cut.ply and mapped.ply differ in vertices or faces"
+    assert "quality" in c.vertex, "the cut layer has no vertex quality"
+    assert np.allclose(c.vertex["TargetPosition"], m.verts, atol=1e-5), "TargetPosition is not the mapped position"
+    if "texture" in expect:
+        assert "texcoord" in c.face_props, "the cut layer has no wedge texture coordinates"
+        assert f"TextureFile {expect['texture']}" in c.comments, f"the cut layer does not name {expect['texture']}"
+        assert os.path.isfile(os.path.join(outdir, expect["texture"])), "the target's texture image was not saved"
+
+    t = meshes.read_mesh(tgt)
+    rate = meshes.on_surface_rate(m.verts, t, 0.005 * meshes.diagonal(t.verts))
+    topo = meshes.topology(c)
+    print(f"\n    {name}: {figures['time_total_s']:.0f} s in the core; cut {len(c.verts)} v {len(c.faces)} f, "
+          f"components/loops/chi {topo}; mapped on target {100 * rate:.2f}%, before projection "
+          f"{100 * figures['on_surface_rate']:.2f}%, coverage {100 * figures['coverage']:.2f}%, "
+          f"anchor error {figures['anchor_error_cells']:.2f} cells")
+    assert rate >= 0.99, f"only {100 * rate:.2f}% of the mapped vertices lie within 0.5% of the target's diagonal"
+    # The report's rate measures the tracked images before the final projection (report.h).
+    assert figures["on_surface_rate"] >= 0.99, f"on-surface rate before projection {figures['on_surface_rate']}"
+    assert topo == (expect["components"], expect["loops"], expect["chi"]), f"cut layer: {topo}, expected {expect}"
+    assert (figures["cut_components"], figures["cut_boundary_loops"], figures["cut_euler_characteristic"]) == topo
+    assert (figures["cut_vertices"], figures["cut_faces"]) == (len(c.verts), len(c.faces))
+
+
+def test_map_meshes_command():
+    outdir = os.path.join(OUT, "map_meshes")
+    shutil.rmtree(outdir, ignore_errors=True)
+    # Started by a python3 without pymeshlab, the script runs itself again with the venv's.
+    command = ["python3", os.path.join(SAMPLES, "map_meshes.py"), os.path.join(SAMPLES, "torus.ply"),
+               os.path.join(SAMPLES, "sphere.ply"), outdir]
+    p = subprocess.run(command + ["--grid", "24", "--steps", "8"], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, f"map_meshes.py failed ({p.returncode}): {p.stderr[-500:]}"
+    report = open(os.path.join(outdir, "report.txt")).read()
+    assert "steps: 8" in report and report in p.stdout, "report.txt lacks --steps 8, or was not printed"
+    c = meshes.read_mesh(os.path.join(outdir, "cut.ply"))
+    m = meshes.read_mesh(os.path.join(outdir, "mapped.ply"))
+    assert len(c.verts) == len(m.verts) and c.faces == m.faces
+    stated = re.search(r"cut source: (\d+) components?, (\d+) boundary loops?, Euler characteristic (-?\d+); "
+                       r"(\d+) vertices .*, (\d+) faces", report)
+    assert stated, "report.txt has no 'cut source: ...' line"
+    assert meshes.topology(c) + (len(c.verts), len(c.faces)) == tuple(map(int, stated.groups()))
+    sphere = meshes.read_mesh(os.path.join(SAMPLES, "sphere.ply"))
+    assert meshes.on_surface_rate(m.verts, sphere, 0.005 * meshes.diagonal(sphere.verts)) >= 0.99
+
+    p = subprocess.run(command + ["--grid", "2"], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 1 and "grid_resolution 2 is out of range" in p.stderr, p.stderr[-500:]
+
+
+# The MeshLab tests' bad inputs (their parameter names are pymeshlab's keyword arguments;
+# a new MeshSet's layer ids are the load order, as the .mlx scripts' layer numbers), and
+# what only pymeshlab can pass: ids of no layer.
+_BAD_DIR = tempfile.mkdtemp(prefix="eulermap-pymeshlab-")
+_SPHERE, _TORUS = os.path.join(SAMPLES, "sphere.ply"), os.path.join(SAMPLES, "torus.ply")
+BAD_INPUTS = run_tests.bad_inputs(_BAD_DIR) + [
+    ("no_target_by_default", [_SPHERE], {}, "no target mesh"),
+    ("target_id_missing", [_SPHERE, _TORUS], dict(target_mesh=99), "target_mesh: layer 99 does not exist"),
+    ("source_id_missing", [_SPHERE, _TORUS], dict(source_mesh=7), "source_mesh: layer 7 does not exist"),
+    ("target_id_negative", [_SPHERE, _TORUS], dict(target_mesh=-1), "no target mesh"),
+]
+
+
+@pytest.fixture(scope="module")
+def bad_dir():
+    yield _BAD_DIR
+    shutil.rmtree(_BAD_DIR, ignore_errors=True)
+
+
+@pytest.mark.parametrize("name,inputs,values,expected", BAD_INPUTS, ids=[b[0] for b in BAD_INPUTS])
+def test_bad_input(bad_dir, name, inputs, values, expected):
+    ms = mesh_set(*inputs)
+    layers = ms.mesh_number()
+    log = []
+    with pytest.raises(pymeshlab.PyMeshLabException) as failure:
+        map_meshes.apply_logged(ms, log, **values)
+    message = str(failure.value)
+    print(f"\n    {name}: {message.splitlines()[-1]}")
+    assert f"Failed to apply filter: {FILTER}" in message and expected in message, message
+    assert ms.mesh_number() == layers, "a failed run left layers behind"
+
+
+def test_runs_after_failures():
+    """Failed runs whose MeshSets are then freed, each followed by a run in a new MeshSet:
+    the interpreter lives on. (pymeshlab 2025.7.post1 keeps pointers to a failed filter's
+    log; map_meshes.apply_logged and the plugin drop theirs.) In a child process, so that a
+    crash fails this test alone."""
+    code = f"""
+import sys
+sys.path.insert(0, {os.path.join(ROOT, "samples")!r})
+import map_meshes, pymeshlab
+map_meshes.load_plugin()
+for _ in range(3):
+    for grid in (2, 12):
+        ms = pymeshlab.MeshSet()
+        for f in ({_SPHERE!r}, {_TORUS!r}):
+            ms.load_new_mesh(f)
+        try:
+            map_meshes.apply_logged(ms, [], source_mesh=0, target_mesh=1, grid_resolution=grid, steps=2)
+        except pymeshlab.PyMeshLabException:
+            assert grid == 2
+        del ms
+print("alive")
+"""
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0 and "alive" in p.stdout, f"exit {p.returncode}: {p.stderr[-800:]}"
