@@ -20,9 +20,10 @@
 // alpha becomes alpha / 4 (the energy of a linear field: a coarse grid has 1/8 the nodes
 // and edges 2 cells long, 4 times the squared difference).
 //
-// One V-cycle: on each level, 2 red-black block Gauss-Seidel sweeps (red then black),
-// the residual restricted to the next level, the correction prolonged back, 2 sweeps in
-// the reverse order (black then red); on the coarsest level (at most kCoarsestNodes nodes
+// One V-cycle: on each level, a red-black block Gauss-Seidel sweep (red then black),
+// the residual restricted to the next level, the correction prolonged back, a sweep in
+// the reverse order (black then red) (two sweeps each way: 134 iterations instead of 182
+// on Table 1 row 1, but 28% more time); on the coarsest level (at most kCoarsestNodes nodes
 // or an axis of at most 4 nodes) 20 sweeps, then the same in reverse. The post-smoother is
 // the adjoint of the pre-smoother, so the cycle is a symmetric positive definite operator,
 // as preconditioned conjugate gradients need.
@@ -34,15 +35,16 @@
 
 namespace eulermap {
 
-// A symmetric 3x3 matrix.
+// A symmetric 3x3 matrix, in single precision (the preconditioner's storage: half the
+// memory traffic of double; the conjugate gradients around it stay in double).
 struct Sym3 {
-  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+  float xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
 
-  Point3 operator*(const Point3 &v) const {
-    return Point3(xx * v[0] + xy * v[1] + xz * v[2], xy * v[0] + yy * v[1] + yz * v[2],
-                  xz * v[0] + yz * v[1] + zz * v[2]);
+  vcg::Point3f operator*(const vcg::Point3f &v) const {
+    return vcg::Point3f(xx * v[0] + xy * v[1] + xz * v[2], xy * v[0] + yy * v[1] + yz * v[2],
+                        xz * v[0] + yz * v[1] + zz * v[2]);
   }
-  // The inverse of this + c I (positive definite).
+  // The inverse of this + c I (positive definite), computed in double.
   Sym3 ShiftedInverse(double c) const;
 };
 
@@ -69,14 +71,14 @@ class BlockMultigrid {
     double alpha = 0;
     std::vector<Sym3> data;     // D_i
     std::vector<Sym3> inverse;  // (D_i + alpha n_i I)^-1
-    std::vector<Point3> x, b, r;
+    std::vector<vcg::Point3f> x, b, r;
     std::size_t Index(int i, int j, int k) const { return i + std::size_t(dims[0]) * (j + std::size_t(dims[1]) * k); }
     std::size_t Count() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   };
 
   void Sweep(Level &l, int colour);
   void Residual(Level &l);                    // l.r = l.b - A l.x
-  void Restrict(const Level &fine, const std::vector<Point3> &in, Level &coarse, std::vector<Point3> &out);
+  void Restrict(const Level &fine, const std::vector<vcg::Point3f> &in, Level &coarse, std::vector<vcg::Point3f> &out);
   void RestrictData(const Level &fine, Level &coarse);
   void ProlongAdd(const Level &coarse, Level &fine);  // fine.x += P coarse.x
   void Cycle(std::size_t level);

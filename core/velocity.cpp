@@ -54,7 +54,8 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
     for (long m = 0; m < long(n); ++m) {
       const Point3 &g = g_[m];
       const double b = Beta(m);
-      data[m] = {g[0] * g[0] + b, g[0] * g[1], g[0] * g[2], g[1] * g[1] + b, g[1] * g[2], g[2] * g[2] + b};
+      data[m] = {float(g[0] * g[0] + b), float(g[0] * g[1]), float(g[0] * g[2]), float(g[1] * g[1] + b),
+                 float(g[1] * g[2]), float(g[2] * g[2] + b)};
     }
     multigrid_->Update();
     s = SolveConjugateGradient(V, bNorm, [&](const std::vector<Point3> &r, std::vector<Point3> &z) { multigrid_->Precondition(r, z); });
