@@ -78,7 +78,7 @@ std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align alig
 } // namespace
 
 void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &anchors, const Options &options,
-                Result &result, const Progress &progress) {
+                Result &result, const Progress &progress, const std::vector<Point3> &samples) {
   Validate(source, target, anchors, options);
   const ThreadScope threads(options.threads);
   auto report = [&](double share, const std::string &stage) {
@@ -143,11 +143,12 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   morph.Frame(0, fCur);
   rep.times.interp += Seconds(t0);
 
-  // Tracked points: the source's vertices, then the anchors a_i.
+  // Tracked points: the source's vertices, then the anchors a_i, then the samples.
   std::vector<Point3> points;
-  points.reserve(source.vert.size() + a.size());
+  points.reserve(source.vert.size() + a.size() + samples.size());
   for (const Vertex &v : source.vert) points.push_back(v.cP());
   points.insert(points.end(), a.begin(), a.end());
+  points.insert(points.end(), samples.begin(), samples.end());
   Tracker tracker(std::move(points), fCur);
   Surgery surgery(source, options.holeRadius * grid.h, grid.h);  // surgery.h
 
@@ -199,6 +200,9 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
 
   // Outputs: cut (source with TargetPosition), mapped (vertices at their images).
   const Similarity back = place.Inverse();
+  result.sampleImages.clear();
+  for (std::size_t n = 0; n < samples.size(); ++n)
+    result.sampleImages.push_back(back.Apply(tracked[source.vert.size() + a.size() + n]));
   auto targetPosition = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   for (std::size_t n = 0; n < cut.vert.size(); ++n) targetPosition[n] = back.Apply(hits[n].point);
   if (options.transferTexture) PullTexCoords(cut, target, hits, placed);

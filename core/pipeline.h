@@ -55,13 +55,17 @@ struct Result {
   Mesh cut;
   Mesh mapped;
   Mesh filled;
+  std::vector<Point3> sampleImages;  // of ComputeMap's samples, in order
   Report report;
 };
 
 // Called with a share in [0,1] and the stage's name; return false to cancel.
 using Progress = std::function<bool(double, const std::string &)>;
 
+// samples: extra points on the source (or off it: each follows its own level set) to map
+// with the integral formula (Eq. 7) beside the vertices; their images, on the target's
+// frame and not projected onto it, go to Result::sampleImages.
 void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &anchors, const Options &options,
-                Result &result, const Progress &progress = {});
+                Result &result, const Progress &progress = {}, const std::vector<Point3> &samples = {});
 
 } // namespace eulermap

@@ -1,6 +1,8 @@
 #include "meshes.h"
 
 #include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/create/marching_cubes.h>
+#include <vcg/complex/algorithms/create/mc_trivial_walker.h>
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -115,6 +117,34 @@ void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide) {  // faces split in ha
     }
   }
   vcg::tri::Clean<Mesh>::RemoveDuplicateVertex(m);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+  Finish(m);
+}
+
+void MakeDoubleTorus(Mesh &m, double r, int cells) {
+  using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<float>>;
+  using Walker = vcg::tri::TrivialWalker<Mesh, Volume>;
+  using Cubes = vcg::tri::MarchingCubes<Mesh, Walker>;
+  const Box3 box(Point3(-1.2, -0.8, -0.4), Point3(1.2, 0.8, 0.4));
+  const double h = box.DimX() / cells;
+  const vcg::Point3i size(cells + 1, int(std::ceil(box.DimY() / h)) + 1, int(std::ceil(box.DimZ() / h)) + 1);
+  Volume volume;
+  volume.Init(size, vcg::Box3<float>(vcg::Point3f::Construct(box.min),
+                                     vcg::Point3f::Construct(box.min + Point3(size[0] - 1, size[1] - 1, size[2] - 1) * h)));
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j)
+      for (int i = 0; i < size[0]; ++i) {
+        const Point3 p = box.min + Point3(i, j, k) * h;
+        const double e = p.X() * p.X() * (1 - p.X() * p.X()) - p.Y() * p.Y();
+        volume.Val(i, j, k) = float(e * e + p.Z() * p.Z() - r * r);
+      }
+  m.Clear();
+  Walker walker;
+  Cubes cubes(m, walker);
+  walker.BuildMesh<Cubes>(m, volume, cubes, 0);
+  vcg::tri::Clean<Mesh>::RemoveDuplicateVertex(m);
+  vcg::tri::Clean<Mesh>::RemoveDegenerateFace(m);
+  vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(m);
   vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
   Finish(m);
 }

@@ -24,6 +24,11 @@ void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide = 1);  // 8 vertices wit
 // (ring, tube) angles / 2pi.
 void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv = 64, int tubeDiv = 32);
 
+// Genus 2: the zero set of (x^2 (1 - x^2) - y^2)^2 + z^2 - r^2, a tube around the figure
+// eight y^2 = x^2 (1 - x^2) (two loops crossing at the origin) in [-1.2, 1.2] x [-0.8, 0.8]
+// x [-0.4, 0.4], by vcglib's marching cubes on `cells` cells along x; outward-oriented.
+void MakeDoubleTorus(Mesh &m, double r = 0.1, int cells = 96);
+
 } // namespace eulermap::testing
 
 #include "core/pipeline.h"
