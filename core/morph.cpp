@@ -88,9 +88,11 @@ struct WarpPair {
   bool identity[2] = {false, false};  // W_t->0 (resp. W_t->1) is exactly the identity
   Vec3 centre;                        // coordinates are normalised: y = (p - centre) / unit
   double unit = 1;
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> nodes;    // q_i(t), normalised
-  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> weights;  // RBF weights, [to a | to b]
-  Eigen::Matrix<double, 4, 6> affine;                                 // rows: 1, y_x, y_y, y_z
+  // Column-major: each coordinate and each weight column contiguous, so Evaluate runs on
+  // whole columns (vectorised: Table 1 row 1 INT 1.18 -> 1.02 s).
+  Eigen::Matrix<double, Eigen::Dynamic, 3> nodes;    // q_i(t), normalised
+  Eigen::Matrix<double, Eigen::Dynamic, 6> weights;  // RBF weights, [to a | to b]
+  Eigen::Matrix<double, 4, 6> affine;                // rows: 1, y_x, y_y, y_z
 
   // Evaluates both warps at p.
   //   p:          world point
@@ -99,10 +101,15 @@ struct WarpPair {
   void Evaluate(const Point3 &p, Point3 &toSource, Point3 &toTarget) const {
     const Vec3 y = (ToEigen(p) - centre) / unit;
     Eigen::Matrix<double, 1, 6> acc = affine.row(0) + y.x() * affine.row(1) + y.y() * affine.row(2) + y.z() * affine.row(3);
-    const Eigen::Index n = nodes.rows();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double dx = y.x() - nodes(i, 0), dy = y.y() - nodes(i, 1), dz = y.z() - nodes(i, 2);
-      acc += std::sqrt(dx * dx + dy * dy + dz * dz) * weights.row(i);  // phi(r) = r
+    // acc += sum_i phi(|y - q_i|) w_i, phi(r) = r, in blocks of kBlock anchors (no allocation).
+    constexpr Eigen::Index kBlock = 32;
+    for (Eigen::Index start = 0; start < nodes.rows(); start += kBlock) {
+      const Eigen::Index m = std::min(kBlock, nodes.rows() - start);
+      const Eigen::Array<double, Eigen::Dynamic, 1, 0, kBlock, 1> r =
+          ((nodes.col(0).segment(start, m).array() - y.x()).square() + (nodes.col(1).segment(start, m).array() - y.y()).square() +
+           (nodes.col(2).segment(start, m).array() - y.z()).square())
+              .sqrt();
+      acc.noalias() += r.matrix().transpose() * weights.middleRows(start, m);
     }
     toSource = identity[0] ? p : ToPoint(centre + unit * acc.head<3>().transpose());
     toTarget = identity[1] ? p : ToPoint(centre + unit * acc.tail<3>().transpose());
