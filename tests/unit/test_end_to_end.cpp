@@ -73,3 +73,36 @@ TEST(EndToEnd, SpotToCowWithAnchors) {
   // the two sides of spot's thin parts fold onto each other. Open in issue 2.
   ExpectGoodMap(result.report, true, 0.96, 0.02);
 }
+
+// The same map with 1 and 2 threads (issue 7): spot -> cow with anchors at 32 cells, and
+// sphere -> torus (surgery) at 32 cells. Every image agrees within 1e-6 of the target's
+// diagonal, and the cut has the same faces.
+TEST(EndToEnd, OneAndTwoThreadsAgree) {
+  for (int pair = 0; pair < 2; ++pair) {
+    Mesh source, target;
+    std::vector<AnchorPair> anchors;
+    if (pair == 0) {
+      LoadMesh(SampleFile("spot.ply"), source);
+      LoadMesh(SampleFile("cow.off"), target);
+      anchors = ReadAnchorPairs(SampleFile("spot.pp"), SampleFile("cow.pp"));
+    } else {
+      MakeSphere(source, Point3(0, 0, 0), 1.0, 4);
+      MakeTorus(target, Point3(0, 0, 0), 1.0, 0.4);
+    }
+    Result one, two;
+    Options options;
+    options.gridResolution = 32;
+    options.threads = 1;
+    ComputeMap(source, target, anchors, options, one);
+    options.threads = 2;
+    ComputeMap(source, target, anchors, options, two);
+    ASSERT_EQ(one.mapped.vn, two.mapped.vn);
+    ASSERT_EQ(one.cut.fn, two.cut.fn);
+    double worst = 0;
+    for (int v = 0; v < one.mapped.vn; ++v)
+      worst = std::max(worst, vcg::Distance(one.mapped.vert[v].cP(), two.mapped.vert[v].cP()));
+    std::printf("[ figures  ] %s: 1 vs 2 threads, largest image difference %.2e of diagonal %.3g\n",
+                pair == 0 ? "spot -> cow" : "sphere -> torus", worst, target.bbox.Diag());
+    EXPECT_LE(worst, 1e-6 * target.bbox.Diag());
+  }
+}
