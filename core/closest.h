@@ -1,8 +1,9 @@
 // eulermap::ClosestPoint — nearest point on a triangle mesh: a bounding-volume tree over
 // the faces, with vcglib's point–triangle distance (face::PointDistanceBase) at the
 // leaves. Not vcglib's GridStaticPtr / tri::GetClosestFaceBase: those mark faces in the
-// mesh (not thread-safe) and cost O((distance/voxel)^4) far from the surface, which is
-// where most SDF grid nodes are (closest.cpp has the figures).
+// mesh (not thread-safe) and cost O((distance/voxel)^4) far from the surface (closest.cpp
+// has the figures). Used for the images' projection onto the target, the quality
+// measures and untangling; the grid's distances come from distance_transform.h.
 #pragma once
 
 #include "mesh.h"

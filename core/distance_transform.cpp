@@ -14,7 +14,11 @@ struct Triangle {
 };
 
 // Squared distance from p to triangle t: the nearest point by the Voronoi regions of the
-// triangle's corners, edges and face (barycentric tests on the projections of p).
+// triangle's corners, edges and face (barycentric tests on the projections of p), no
+// square root. Not vcglib's: vcg::TrianglePointDistance (exact, but a normalised plane, a
+// projection and three segment distances per call) made this SDF 2.8x slower (sphere,
+// 96^3, one thread: 0.78 -> 2.22 s); face::PointDistanceBase needs face normals and its
+// 1e-6 tolerances put it off by up to 1e-3 cells (test_sdf).
 double SquaredDistance(const Triangle &t, const Point3 &p) {
   const Point3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);

@@ -178,7 +178,6 @@ void BlockMultigrid::Cycle(std::size_t n) {
 void BlockMultigrid::Precondition(const std::vector<Point3> &r, std::vector<Point3> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.Count());
-  fine.x.resize(n), fine.b.resize(n);
 #pragma omp parallel for schedule(static)
   for (long m = 0; m < n; ++m) fine.b[m] = vcg::Point3f::Construct(r[m]);
   Cycle(0);

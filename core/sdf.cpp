@@ -28,9 +28,9 @@
 // [B18] suggests beta = 2. Measured against the exact sum at points in and around
 // bunny.off / camelhead.off (down to 1% of the diagonal from the surface), the largest
 // error was 3.8e-3 / 6.2e-3 with beta = 2 and 6.3e-4 / 9.6e-4 with beta = 3 (order 2
-// alone: 1.4e-2 at beta = 3); beta = 3 costs ~1.5-2x the evaluations of beta = 2, still
-// less than the closest-point queries of SignedDistance. Only the sign of w - 1/2
-// matters there, but the numbers are also meant to be read.
+// alone: 1.4e-2 at beta = 3); beta = 3 costs ~1.5-2x the evaluations of beta = 2.
+// SignedDistance needs only the sign of w - 1/2 (Inside: beta = 2 unless w is near 1/2),
+// but the numbers are also meant to be read.
 #include "sdf.h"
 
 #include "distance_transform.h"
@@ -278,8 +278,8 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, boo
   const Grid &grid = d.grid;
   const std::size_t count = grid.NodeCount();
   const vcg::Point3i &dims = grid.dims;
-  std::vector<char> inside(count, 0);
   if (!closed) {
+    std::vector<char> inside(count);
 #pragma omp parallel for schedule(dynamic, 256)
     for (long n = 0; n < long(count); ++n) {
       const int i = int(n % dims.X()), j = int(n / dims.X() % dims.Y()), k = int(n / (long(dims.X()) * dims.Y()));
@@ -326,8 +326,7 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, boo
     state[seed] = winding.Inside(grid.Node(i, j, k));
     queue.push_back(seed);
   }
-  for (std::size_t n = 0; n < count; ++n) inside[n] = state[n];
-  return inside;
+  return state;  // every node known
 }
 
 } // namespace

@@ -124,6 +124,14 @@ Surgery::Surgery(const Mesh &source, double radius, double cell)
   }
 }
 
+int Surgery::PointsAdded() const {
+  std::vector<char> used(sourcePosition_.size(), 0);
+  for (const Tri &t : tris_)
+    if (t.state == kAlive)
+      for (int c = 0; c < 3; ++c) used[t.v[c]] = 1;
+  return int(std::count(used.begin() + sourceVertices_, used.end(), 1));
+}
+
 std::vector<Point3> Surgery::Positions(const std::vector<Point3> &tracked) const {
   std::vector<Point3> p(tracked.begin(), tracked.begin() + sourceVertices_);
   for (const std::array<int, 2> &w : trackedBy_) p.push_back(batches_[w[0]].Points()[w[1]]);
@@ -494,8 +502,7 @@ std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &trac
   for (const Tri &t : tris_)
     if (t.state == kAlive)
       for (int c = 0; c < 3; ++c) used[t.v[c]] = 1;
-  auto firstAdded = vcg::tri::Allocator<Mesh>::AddVertices(cut, points - sourceVertices_);
-  (void)firstAdded;
+  vcg::tri::Allocator<Mesh>::AddVertices(cut, points - sourceVertices_);
   for (int n = sourceVertices_; n < points; ++n) {
     Vertex &v = cut.vert[n];
     v.P() = sourcePosition_[n], v.N() = normal[n], v.C() = colour[n], v.T() = tex[n], v.Q() = quality[n];

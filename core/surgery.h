@@ -69,7 +69,9 @@ class Surgery {
   // Every saddle event: step and position where it first cut (where it was first seen if
   // it never cut), kind, whether it cut.
   const std::vector<SaddleEvent> &Saddles() const { return saddles_.Events(); }
-  int PointsAdded() const { return int(sourcePosition_.size()) - sourceVertices_; }
+  // The added points that faces of the cut source use (those of removed faces are not
+  // counted: they are not in the cut).
+  int PointsAdded() const;
 
   // in:  source (as given to the constructor), tracked (the source vertices' final positions)
   // out: cut: the source refined where points were added, without the removed faces and the

@@ -1,5 +1,6 @@
 #include "filter_eulermap_2020.h"
 
+#include "rich_parameters.h"
 #include "run_on_layers.h"
 
 using namespace eulermap::plugin;
@@ -46,47 +47,16 @@ void FilterEulermapPlugin::initParameterSet(QAction *, MeshDocument &md, RichPar
   MeshModel *current = md.mm();
   MeshModel *other = current ? layers.layer(DefaultTargetLayer(md.meshList.indexOf(current), layers.layers)) : nullptr;
   MeshDocument *doc = current ? &md : nullptr;  // RichMesh asserts on a layer not in the document
-  for (const ParameterSpec &p : Parameters()) {
-    switch (p.kind) {
-    case ParameterKind::Mesh:
-      parameters.addParam(RichMesh(p.name, p.name == param::kSourceMesh ? current : other, doc, p.label, p.help));
-      break;
-    case ParameterKind::Int:
-      parameters.addParam(RichInt(p.name, p.defaultValue.toInt(), p.label, p.help));
-      break;
-    case ParameterKind::Float:
-      parameters.addParam(RichFloat(p.name, p.defaultValue.toFloat(), p.label, p.help));
-      break;
-    case ParameterKind::Enum:
-      parameters.addParam(RichEnum(p.name, p.defaultValue.toInt(), p.choices, p.label, p.help));
-      break;
-    case ParameterKind::Bool:
-      parameters.addParam(RichBool(p.name, p.defaultValue.toBool(), p.label, p.help));
-      break;
-    case ParameterKind::OpenFile:
-      parameters.addParam(RichOpenFile(p.name, p.defaultValue.toString(), p.choices, p.label, p.help));
-      break;
-    case ParameterKind::String:
-      parameters.addParam(RichString(p.name, p.defaultValue.toString(), p.label, p.help));
-      break;
-    }
-  }
+  DeclareParameters(
+      parameters,
+      [&](const ParameterSpec &p) { return RichMesh(p.name, p.name == param::kSourceMesh ? current : other, doc, p.label, p.help); },
+      [](const ParameterSpec &p) { return RichOpenFile(p.name, p.defaultValue.toString(), p.choices, p.label, p.help); });
 }
 
 bool FilterEulermapPlugin::applyFilter(QAction *, MeshDocument &md, const RichParameterList &parameters,
                                        vcg::CallBackPos *cb) {
-  const Request request = ReadRequest([&](const ParameterSpec &p) -> QVariant {
-    switch (p.kind) {
-    case ParameterKind::Mesh: return md.meshList.indexOf(parameters.getMesh(p.name));
-    case ParameterKind::Int: return parameters.getInt(p.name);
-    case ParameterKind::Float: return double(parameters.getFloat(p.name));
-    case ParameterKind::Enum: return parameters.getEnum(p.name);
-    case ParameterKind::Bool: return parameters.getBool(p.name);
-    case ParameterKind::OpenFile: return parameters.getOpenFileName(p.name);
-    case ParameterKind::String: return parameters.getString(p.name);
-    }
-    return {};
-  });
+  const Request request =
+      ReadParameters(parameters, [&](const ParameterSpec &p) { return md.meshList.indexOf(parameters.getMesh(p.name)); });
   auto log = [this](const QString &line) { Log(GLLogStream::FILTER, line.toStdString()); };
   eulermap::Result result;
   QString error;

@@ -1,5 +1,6 @@
 #include "filter_eulermap_2025.h"
 
+#include "rich_parameters.h"
 #include "run_on_layers.h"
 
 #include <common/mlexception.h>
@@ -77,50 +78,20 @@ RichParameterList FilterEulermapPlugin::initParameterList(const QAction *, const
   const std::vector<int> layers = LayerIds(md);
   const int current = md.mm() ? md.mm()->id() : 0;
   RichParameterList parameters;
-  for (const ParameterSpec &p : Parameters()) {
-    switch (p.kind) {
-    case ParameterKind::Mesh:
-      parameters.addParam(RichMesh(p.name, p.name == param::kSourceMesh ? current : DefaultTargetLayer(current, layers),
-                                   &md, p.label, p.help));
-      break;
-    case ParameterKind::Int:
-      parameters.addParam(RichInt(p.name, p.defaultValue.toInt(), p.label, p.help));
-      break;
-    case ParameterKind::Float:
-      parameters.addParam(RichFloat(p.name, p.defaultValue.toDouble(), p.label, p.help));
-      break;
-    case ParameterKind::Enum:
-      parameters.addParam(RichEnum(p.name, p.defaultValue.toInt(), p.choices, p.label, p.help));
-      break;
-    case ParameterKind::Bool:
-      parameters.addParam(RichBool(p.name, p.defaultValue.toBool(), p.label, p.help));
-      break;
-    case ParameterKind::OpenFile:
-      parameters.addParam(RichFileOpen(p.name, p.defaultValue.toString(), p.choices, p.label, p.help));
-      break;
-    case ParameterKind::String:
-      parameters.addParam(RichString(p.name, p.defaultValue.toString(), p.label, p.help));
-      break;
-    }
-  }
+  DeclareParameters(
+      parameters,
+      [&](const ParameterSpec &p) {
+        return RichMesh(p.name, p.name == param::kSourceMesh ? current : DefaultTargetLayer(current, layers), &md,
+                        p.label, p.help);
+      },
+      [](const ParameterSpec &p) { return RichFileOpen(p.name, p.defaultValue.toString(), p.choices, p.label, p.help); });
   return parameters;
 }
 
 std::map<std::string, QVariant> FilterEulermapPlugin::applyFilter(const QAction *, const RichParameterList &parameters,
                                                                   MeshDocument &md, unsigned int &,
                                                                   vcg::CallBackPos *cb) {
-  const Request request = ReadRequest([&](const ParameterSpec &p) -> QVariant {
-    switch (p.kind) {
-    case ParameterKind::Mesh: return int(parameters.getMeshId(p.name));
-    case ParameterKind::Int: return parameters.getInt(p.name);
-    case ParameterKind::Float: return double(parameters.getFloat(p.name));
-    case ParameterKind::Enum: return parameters.getEnum(p.name);
-    case ParameterKind::Bool: return parameters.getBool(p.name);
-    case ParameterKind::OpenFile: return parameters.getOpenFileName(p.name);
-    case ParameterKind::String: return parameters.getString(p.name);
-    }
-    return {};
-  });
+  const Request request = ReadParameters(parameters, [&](const ParameterSpec &p) { return int(parameters.getMeshId(p.name)); });
   auto log = [this](const QString &line) { this->log(GLLogStream::FILTER, line.toStdString()); };
   eulermap::Result result;
   QString error;

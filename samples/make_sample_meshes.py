@@ -62,52 +62,36 @@ def normalize(v):
 
 
 def torus(R, r, ring, tube):
-    verts, faces, wedges = [], [], []
+    """Vertices, texture coordinates, faces and each face's three indices into them (as
+    obj_to_ply.read_obj gives them)."""
+    verts, uvs, faces, wedges = [], [], [], []
     for i in range(ring):
         for j in range(tube):
             u, v = 2 * math.pi * i / ring, 2 * math.pi * j / tube
             verts.append(((R + r * math.cos(v)) * math.cos(u), (R + r * math.cos(v)) * math.sin(u), r * math.sin(v)))
+    for i in range(ring + 1):  # the seam's coordinates twice (0 and 1): seamless per-wedge UVs
+        for j in range(tube + 1):
+            uvs.append((i / ring, j / tube))
     for i in range(ring):
         for j in range(tube):
             a, b = i * tube + j, ((i + 1) % ring) * tube + j
             c, d = ((i + 1) % ring) * tube + (j + 1) % tube, i * tube + (j + 1) % tube
-            ta, tb = (i / ring, j / tube), ((i + 1) / ring, j / tube)
-            tc, td = ((i + 1) / ring, (j + 1) / tube), (i / ring, (j + 1) / tube)
+            ta, tb, tc, td = i * (tube + 1) + j, (i + 1) * (tube + 1) + j, (i + 1) * (tube + 1) + j + 1, i * (tube + 1) + j + 1
             faces += [(a, b, c), (a, c, d)]
             wedges += [(ta, tb, tc), (ta, tc, td)]
-    return verts, faces, wedges
-
-
-def write_ply(path, verts, faces, wedges=None, texture=None):
-    with open(path, "w") as f:
-        f.write("ply\nformat ascii 1.0\n")
-        if texture:
-            f.write("comment TextureFile %s\n" % texture)
-        f.write("element vertex %d\nproperty float x\nproperty float y\nproperty float z\n" % len(verts))
-        f.write("element face %d\nproperty list uchar int vertex_indices\n" % len(faces))
-        if wedges:
-            f.write("property list uchar float texcoord\n")
-        f.write("end_header\n")
-        for v in verts:
-            f.write("%.7g %.7g %.7g\n" % v)
-        for n, face in enumerate(faces):
-            line = "3 %d %d %d" % face
-            if wedges:
-                line += " 6 " + " ".join("%.7g %.7g" % uv for uv in wedges[n])
-            f.write(line + "\n")
+    return verts, uvs, faces, wedges
 
 
 def main():
     v, f = icosphere(4)
-    write_ply(os.path.join(HERE, "sphere.ply"), v, f)
+    obj_to_ply.write_ply(os.path.join(HERE, "sphere.ply"), v, [], f, [None] * len(f), None)
     texture = "torus_checker.png"
     if shutil.which("convert") and not os.path.exists(os.path.join(HERE, texture)):
         # 8 x 8 blue and white squares
         subprocess.run(["convert", "-size", "64x64", "xc:white", "-fill", "#3070c0", "-draw", "rectangle 0,0 31,31",
                         "-draw", "rectangle 32,32 63,63", "-write", "mpr:tile", "+delete", "-size", "256x256",
                         "tile:mpr:tile", "-strip", os.path.join(HERE, texture)], check=True)
-    v, f, w = torus(1.0, 0.4, 64, 32)
-    write_ply(os.path.join(HERE, "torus.ply"), v, f, w, texture)
+    obj_to_ply.write_ply(os.path.join(HERE, "torus.ply"), *torus(1.0, 0.4, 64, 32), texture)
     if os.path.isdir(SHARED):
         for name in ("spot", "rocker-arm"):
             obj_to_ply.convert(os.path.join(SHARED, name + ".obj"), os.path.join(HERE, name + ".ply"))
