@@ -14,11 +14,15 @@ Same shapes as tests/support/meshes.cpp (MakeSphere, MakeTorus).
 From the project's shared data (../shared/data/meshes):
   spot.ply, rocker-arm.ply  converted from the .obj files (obj_to_ply.py: Debian's
                             MeshLab 2020.09 aborts on .obj), same vertex order, spot
-                            with its per-wedge texture coordinates
+                            with its per-wedge texture coordinates and the texture
+                            spot_checker.png (made with ImageMagick when it is there:
+                            12 x 12 cells, hue by column, darker towards the bottom,
+                            strong and pale alternating, so that orientation shows)
   cow.off                   copied as it is
 
 Usage: python3 samples/make_sample_meshes.py
 """
+import colorsys
 import math
 import os
 import shutil
@@ -82,6 +86,22 @@ def torus(R, r, ring, tube):
     return verts, uvs, faces, wedges
 
 
+def spot_checker(path, cells=12, size=768):
+    """cells x cells squares: the hue turns with the column (u), the colour gets darker
+    towards the image's bottom (v), and neighbouring cells alternate strong and pale."""
+    px = size // cells
+    cmd = ["convert", "-size", f"{size}x{size}", "xc:white"]
+    for col in range(cells):
+        for row in range(cells):  # row 0 at the image's top
+            strong = (col + row) % 2 == 0
+            t = row / (cells - 1)
+            light = (0.64 - 0.26 * t) if strong else (0.88 - 0.14 * t)
+            r, g, b = colorsys.hls_to_rgb(col / cells, light, 0.85 if strong else 0.7)
+            colour = "#%02x%02x%02x" % (round(255 * r), round(255 * g), round(255 * b))
+            cmd += ["-fill", colour, "-draw", f"rectangle {px * col},{px * row} {px * col + px - 1},{px * row + px - 1}"]
+    subprocess.run(cmd + ["-strip", path], check=True)
+
+
 def main():
     v, f = icosphere(4)
     obj_to_ply.write_ply(os.path.join(HERE, "sphere.ply"), v, [], f, [None] * len(f), None)
@@ -93,8 +113,12 @@ def main():
                         "tile:mpr:tile", "-strip", os.path.join(HERE, texture)], check=True)
     obj_to_ply.write_ply(os.path.join(HERE, "torus.ply"), *torus(1.0, 0.4, 64, 32), texture)
     if os.path.isdir(SHARED):
-        for name in ("spot", "rocker-arm"):
-            obj_to_ply.convert(os.path.join(SHARED, name + ".obj"), os.path.join(HERE, name + ".ply"))
+        spot_texture = "spot_checker.png"
+        if shutil.which("convert") and not os.path.exists(os.path.join(HERE, spot_texture)):
+            spot_checker(os.path.join(HERE, spot_texture))
+        verts, uvs, faces, wedges, _ = obj_to_ply.read_obj(os.path.join(SHARED, "spot.obj"))
+        obj_to_ply.write_ply(os.path.join(HERE, "spot.ply"), verts, uvs, faces, wedges, spot_texture)
+        obj_to_ply.convert(os.path.join(SHARED, "rocker-arm.obj"), os.path.join(HERE, "rocker-arm.ply"))
         shutil.copyfile(os.path.join(SHARED, "cow.off"), os.path.join(HERE, "cow.off"))
     else:
         print("no %s: spot, rocker-arm and cow left as they are" % SHARED)

@@ -15,6 +15,8 @@ What it checks, through Debian's meshlab / meshlabserver under Xvfb:
     the report in the log, the input layers unchanged after the filter and the input
     files unchanged (checksums);
   - samples/map_meshes.sh writes cut.ply, mapped.ply and report.txt;
+  - samples/render.sh draws a real cut layer with the checker texture it pulled (measured
+    in the PNG: three drawings, the checker's colours on the textured ones only);
   - every bad input fails the filter with its message, without a crash;
   - the GUI: meshlab loads the plugin, and (with xdotool) the filter is run from
     Filters > Remeshing; screenshots go to out/screenshots/.
@@ -82,7 +84,8 @@ def plugin_parameter_names():
 def mlx_text(**values):
     """A complete script for the filter; `values` override the sample defaults."""
     v = dict(source_mesh=0, target_mesh=1, grid_resolution=64, steps=40, alpha=2, hole_radius=1, align=1,
-             source_anchors="", target_anchors="", anchor_pairs="", fill_holes=False, transfer_texture=True)
+             source_anchors="", target_anchors="", anchor_pairs="", fill_holes=False, transfer_texture=True,
+             transfer_color_quality=False)
     v.update(values)
     b = lambda x: "true" if x else "false"  # noqa: E731
     return f"""<!DOCTYPE FilterScript>
@@ -100,6 +103,7 @@ def mlx_text(**values):
   <Param type="RichString" name="anchor_pairs" value="{v['anchor_pairs']}"/>
   <Param type="RichBool" name="fill_holes" value="{b(v['fill_holes'])}"/>
   <Param type="RichBool" name="transfer_texture" value="{b(v['transfer_texture'])}"/>
+  <Param type="RichBool" name="transfer_color_quality" value="{b(v['transfer_color_quality'])}"/>
  </filter>
 </FilterScript>
 """
@@ -278,6 +282,89 @@ def test_map_meshes_script():
     check(rate >= 0.99, f"only {100 * rate:.2f}% of mapped.ply lies on the sphere")
 
 
+def read_png(path):
+    """(width, height, RGB bytes) of a picture, through ImageMagick's convert."""
+    data = subprocess.run(["convert", path, "-depth", "8", "ppm:-"], capture_output=True, check=True).stdout
+    m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+255\s", data)
+    check(m, f"convert did not turn {path} into an 8-bit PPM")
+    return int(m.group(1)), int(m.group(2)), data[m.end():]
+
+
+def test_render_script():
+    """samples/render.sh draws a real output with MeshLab: sphere -> torus (small grid),
+    then sphere | cut sphere with the torus's checker pulled | mapped layer, 1200x300.
+    Measured in the PNG: its size, three separate drawings left to right, the plain
+    sphere without the checker's blue, both textured layers with the checker's blue and
+    white cells alternating along their middle row (MeshLab's stand-in for a missing
+    image, dummy.png, is a grey checker: no blue). A texture found nowhere is an error."""
+    outdir = os.path.join(OUT, "render")
+    shutil.rmtree(outdir, ignore_errors=True)
+    p = subprocess.run([os.path.join(SAMPLES, "map_meshes.sh"), os.path.join(SAMPLES, "sphere.ply"),
+                        os.path.join(SAMPLES, "torus.ply"), outdir, "--grid", "24", "--steps", "8"],
+                       capture_output=True, text=True, timeout=600)
+    check(p.returncode == 0, f"map_meshes.sh failed ({p.returncode}): {p.stderr[-500:]}")
+    cut, mapped, picture = (os.path.join(outdir, f) for f in ("cut.ply", "mapped.ply", "render.png"))
+    check("TextureFile torus_checker.png" in meshes.read_mesh(cut).comments, "the cut layer does not name torus_checker.png")
+    render = os.path.join(SAMPLES, "render.sh")
+    t0 = time.time()
+    p = subprocess.run([render, picture, "--size", "1200x300", "--textures", SAMPLES, os.path.join(SAMPLES, "sphere.ply"),
+                        cut, mapped], capture_output=True, text=True, timeout=300)
+    seconds = time.time() - t0
+    check(p.returncode == 0, f"render.sh failed ({p.returncode}): {(p.stdout + p.stderr)[-600:]}")
+    width, height, rgb = read_png(picture)
+    check((width, height) == (1200, 300), f"the picture is {width}x{height}, not 1200x300")
+
+    def pixel(x, y):
+        i = 3 * (y * width + x)
+        return rgb[i], rgb[i + 1], rgb[i + 2]
+
+    def drawn(c):  # not the white background
+        return min(c) < 235
+    cols = [any(drawn(pixel(x, y)) for y in range(0, height, 2)) for x in range(width)]
+    runs, start = [], None
+    for x, on in enumerate(cols + [False]):
+        if on and start is None:
+            start = x
+        elif not on and start is not None:
+            runs.append((start, x))
+            start = None
+    check(len(runs) == 3, f"expected 3 separate drawings left to right, found column runs {runs}")
+    covered = sum(drawn(pixel(x, y)) for x in range(0, width, 2) for y in range(0, height, 2)) / (width * height / 4)
+    check(covered > 0.15, f"only {100 * covered:.1f}% of the picture is drawn")
+
+    def blue(c):  # the checker's #3070c0, lit or in shade
+        return c[2] > c[0] + 60 and c[2] > c[1] + 25
+
+    def white(c):  # the checker's white cells (grey in shade)
+        return min(c) > 130 and max(c) - min(c) < 30
+
+    shares = []
+    for x0, x1 in runs:
+        px = [pixel(x, y) for x in range(x0, x1, 2) for y in range(0, height, 2)]
+        px = [c for c in px if drawn(c)]
+        shares.append((sum(map(blue, px)) / len(px), sum(map(white, px)) / len(px)))
+    note(f"render.sh: {seconds:.1f} s; drawings at columns {runs}; (blue, white) shares "
+         + ", ".join(f"({b:.2f}, {w:.2f})" for b, w in shares))
+    check(shares[0][0] < 0.01, f"the plain sphere shows the checker's blue ({100 * shares[0][0]:.1f}% of its pixels)")
+    for (x0, x1), (b, w), name in zip(runs[1:], shares[1:], ("cut", "mapped")):
+        check(b > 0.2 and w > 0.15, f"the {name} layer is not drawn with the checker: {100 * b:.0f}% blue, {100 * w:.0f}% white")
+        row, kinds = [pixel(x, height // 2) for x in range(x0, x1)], []
+        for c in row:
+            k = "b" if blue(c) else "w" if white(c) else None
+            if k and (not kinds or kinds[-1] != k):
+                kinds.append(k)
+        check(len(kinds) >= 5, f"the {name} layer's middle row does not alternate blue and white cells: {''.join(kinds)}")
+    # a texture found nowhere: an error naming it, before MeshLab starts
+    alone = os.path.join(outdir, "alone")
+    os.makedirs(alone)
+    shutil.copy(cut, alone)
+    p = subprocess.run([render, os.path.join(outdir, "missing.png"), os.path.join(alone, "cut.ply")],
+                       capture_output=True, text=True, timeout=60)
+    check(p.returncode != 0 and "texture 'torus_checker.png'" in p.stderr,
+          f"render.sh without the texture: exit {p.returncode}, {p.stderr[-300:]}")
+    check(not os.path.exists(os.path.join(outdir, "missing.png")), "render.sh wrote a picture without the texture")
+
+
 # Bad inputs: (name, inputs, script values, expected message part). Small grids, so a
 # wrongly accepted input still ends quickly.
 def _write(path, text):
@@ -389,7 +476,7 @@ def main():
     tests = [("plugin_installed", test_plugin_installed), ("meshlabserver_lists_filter", test_meshlabserver_lists_filter),
              ("sample_scripts_complete", test_sample_scripts_complete)]
     tests += [("sample_" + n, make_sample_test(n, s, t, e)) for n, s, t, e in SAMPLE_RUNS]
-    tests += [("map_meshes_script", test_map_meshes_script)]
+    tests += [("map_meshes_script", test_map_meshes_script), ("render_script", test_render_script)]
     tests += [("bad_input_" + n, make_bad_input_test(n, i, v, e, tmp)) for n, i, v, e in bad_inputs(tmp)]
     tests += [("gui", test_gui), ("inputs_unchanged", test_inputs_unchanged)]
     passed = failed = 0
