@@ -33,11 +33,8 @@ namespace {
 
 constexpr int kLeafSize = 4;  // faces per leaf
 
-// Barycentric coordinates of p (a point on, or near, triangle (a, b, c)) by the
-// least-squares projection onto the triangle's plane.
-//   in:  triangle corners a, b, c; point p
-//   out: (l0, l1, l2) with l0 + l1 + l2 = 1 and l0 a + l1 b + l2 c the projection of p;
-//        for a degenerate (zero-area) triangle, the weights of the nearest corner.
+} // namespace
+
 Point3 Barycentric(const Point3 &a, const Point3 &b, const Point3 &c, const Point3 &p) {
   const Point3 e0 = b - a, e1 = c - a, d = p - a;
   const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1);
@@ -52,8 +49,6 @@ Point3 Barycentric(const Point3 &a, const Point3 &b, const Point3 &c, const Poin
   const double l2 = (d00 * d21 - d01 * d20) / denom;
   return Point3(1 - l1 - l2, l1, l2);
 }
-
-} // namespace
 
 // Faces in tree order; nodes stored depth-first (the left child follows its parent,
 // `right` indexes the right child, -1 for a leaf). Read-only once built.
@@ -92,11 +87,12 @@ struct ClosestPoint::Tree {
     return s;
   }
 
-  // in:  p; best — the bail-out distance (no face at or beyond it is reported)
+  // in:  p; best — the bail-out distance (no face at or beyond it is reported); among —
+  //      the faces to consider (null: all)
   // out: the nearest face (nullptr if none is nearer than best), best and closest updated.
   //      Nodes are visited nearest box first and skipped when their box is not nearer
   //      than the best face so far.
-  Face *Nearest(const Point3 &p, double &best, Point3 &closest) const {
+  Face *Nearest(const Point3 &p, double &best, Point3 &closest, const std::function<bool(const Face &)> *among) const {
     if (nodes.empty()) return nullptr;
     struct Entry {
       int node;
@@ -113,7 +109,7 @@ struct ClosestPoint::Tree {
       const Node &n = nodes[e.node];
       if (n.right < 0) {
         for (int i = n.first; i < n.first + n.count; ++i)
-          if (vcg::face::PointDistanceBase(*faces[i], p, best, q)) {
+          if ((!among || (*among)(*faces[i])) && vcg::face::PointDistanceBase(*faces[i], p, best, q)) {
             winner = faces[i];
             closest = q;
           }
@@ -175,21 +171,33 @@ ClosestPoint::ClosestPoint(Mesh &mesh) : mesh_(mesh) {
   tree_ = std::make_shared<const Tree>(std::move(faces));
 }
 
-// in:  p — query point; maxDist — search radius, < 0 for no limit
-// out: the nearest point on the mesh, its face, the point's barycentric coordinates in
-//      that face and the distance; face == nullptr when no face lies within maxDist.
-// Thread-safe: reads the tree and the mesh only.
-ClosestHit ClosestPoint::Query(const Point3 &p, double maxDist) const {
+namespace {
+
+// in:  tree, p, best — the search radius; among — the faces to consider (null: all)
+// out: the nearest point on those faces, its face, the point's barycentric coordinates in
+//      that face and the distance; face == nullptr when no such face lies within best.
+template <class Tree>
+ClosestHit Search(const Tree &tree, const Point3 &p, double best, const std::function<bool(const Face &)> *among) {
   ClosestHit hit;
-  double best = maxDist < 0 ? std::numeric_limits<double>::max() : maxDist;
   Point3 closest(0, 0, 0);
-  Face *f = tree_->Nearest(p, best, closest);
+  Face *f = tree.Nearest(p, best, closest, among);
   if (f == nullptr) return hit;
   hit.face = f;
   hit.point = closest;
   hit.distance = best;
   hit.barycentric = Barycentric(f->cP(0), f->cP(1), f->cP(2), closest);
   return hit;
+}
+
+} // namespace
+
+// maxDist < 0: no limit. Thread-safe: reads the tree and the mesh only.
+ClosestHit ClosestPoint::Query(const Point3 &p, double maxDist) const {
+  return Search(*tree_, p, maxDist < 0 ? std::numeric_limits<double>::max() : maxDist, nullptr);
+}
+
+ClosestHit ClosestPoint::Query(const Point3 &p, const std::function<bool(const Face &)> &among) const {
+  return Search(*tree_, p, std::numeric_limits<double>::max(), &among);
 }
 
 } // namespace eulermap

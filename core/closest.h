@@ -8,6 +8,7 @@
 
 #include "mesh.h"
 
+#include <functional>
 #include <memory>
 
 namespace eulermap {
@@ -19,6 +20,12 @@ struct ClosestHit {
   double distance = 0;
 };
 
+// Barycentric coordinates of the projection of p onto the plane of triangle (a, b, c):
+// (l0, l1, l2) with l0 + l1 + l2 = 1 and l0 a + l1 b + l2 c that projection; outside
+// [0, 1] where it falls outside the triangle. A degenerate (zero-area) triangle gives
+// the weights of its corner nearest to p.
+Point3 Barycentric(const Point3 &a, const Point3 &b, const Point3 &c, const Point3 &p);
+
 class ClosestPoint {
  public:
   // Indexes `mesh`'s faces (updates its bounding box and face normals). The mesh must
@@ -26,6 +33,9 @@ class ClosestPoint {
   explicit ClosestPoint(Mesh &mesh);
   // Nearest surface point to p within maxDist (default: no limit). Thread-safe.
   ClosestHit Query(const Point3 &p, double maxDist = -1) const;
+  // Nearest surface point to p on the faces that `among` accepts. Thread-safe when
+  // `among` is.
+  ClosestHit Query(const Point3 &p, const std::function<bool(const Face &)> &among) const;
 
  private:
   struct Tree;

@@ -205,9 +205,9 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
     result.sampleImages.push_back(back.Apply(tracked[source.vert.size() + a.size() + n]));
   auto targetPosition = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   for (std::size_t n = 0; n < cut.vert.size(); ++n) targetPosition[n] = back.Apply(hits[n].point);
-  if (options.transferTexture) PullTexCoords(cut, target, hits, placed);
-  if (options.fillHoles) FillHoles(cut, result.filled);
 
+  // The mapped source keeps the source's own texture coordinates and textures (the
+  // forward method): it is copied before the cut takes the target's.
   Mesh &mapped = result.mapped;
   mapped.Clear();
   CopyMesh(mapped, cut);
@@ -221,10 +221,28 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   vcg::tri::UpdateBounding<Mesh>::Box(mapped);
   vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(mapped);
 
+  rep.quality.meanDistortion = StoreDistortion(cut, mapped);  // the cut's vertex quality, unless pulled below
+
+  // The inverse method (transfer.h): the cut reads the target at the final images.
+  std::vector<ClosestHit> onTarget(mapped.vert.size());
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(mapped.vert.size()); ++n) onTarget[n] = targetIndex.Query(mapped.vert[n].cP());
+  if (options.transferTexture) {
+    const TexCoordPull pull = PullTexCoords(cut, target, onTarget);
+    rep.texture = pull.from == TexCoordKind::None ? "none pulled (the target has no texture coordinates)"
+                  : std::string("pulled per wedge from the target's per-") +
+                        (pull.from == TexCoordKind::PerWedge ? "wedge" : "vertex") + " coordinates; " +
+                        std::to_string(pull.facesAcrossSeams) +
+                        " faces over a seam took one side's chart";
+    rep.texCoordsPulled = pull.from != TexCoordKind::None;
+  }
+  if (options.transferColour || options.transferQuality)
+    PullVertexAttributes(cut, onTarget, options.transferColour, options.transferQuality);
+  if (options.fillHoles) FillHoles(cut, result.filled);
+
   rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag());
   rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
   rep.quality.longestEdgeCells = LongestEdge(mapped) * place.scale / grid.h;
-  rep.quality.meanDistortion = StoreDistortion(cut, mapped);
   const Topology topo = MeasureTopology(cut);
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;

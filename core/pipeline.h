@@ -5,8 +5,10 @@
 //   out: Result: `cut` (the source minus the discs removed by surgery, original
 //        positions, per-vertex attribute "TargetPosition" = F(p) on the real target,
 //        per-vertex quality = distortion, wedge texture coordinates pulled from the
-//        target when it has them), `mapped` (same connectivity and vertex order,
-//        positions F(p)), `filled` (only with Options::fillHoles), and the Report.
+//        target when it has them, and on request its colour and quality: transfer.h),
+//        `mapped` (same connectivity and vertex order, positions F(p), the source's own
+//        texture coordinates and textures), `filled` (only with Options::fillHoles, a
+//        copy of `cut` with its holes closed), and the Report.
 // Throws eulermap::Error with a message for the user on bad input or cancellation.
 #pragma once
 
@@ -46,7 +48,9 @@ struct Options {
   int maxIterations = 500;   // per step
   bool untangle = true;      // relax folded places of the map on the target (untangle.h)
   bool fillHoles = false;
-  bool transferTexture = true;
+  bool transferTexture = true;   // the target's texture coordinates onto the cut (transfer.h)
+  bool transferColour = false;   // the target's vertex colours onto the cut
+  bool transferQuality = false;  // the target's vertex quality onto the cut, instead of the distortion
   int threads = 0;           // 0: all cores
   std::size_t maxGridNodes = 8u << 20;  // larger grids are refused (memory)
 };

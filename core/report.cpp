@@ -48,6 +48,7 @@ std::string Report::ToText() const {
               quality.longestEdgeCells, quality.anchorErrorCells, quality.meanDistortion);
   o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target\n",
               100 * quality.flippedBeforeUntangling, untangledVertices);
+  if (!texture.empty()) o << Format("texture: %s\n", texture.c_str());
   if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
   return o.str();
 }

@@ -69,6 +69,8 @@ struct Report {
   std::vector<SaddleEvent> saddles;
   std::vector<HoleEvent> holes;
   int untangledVertices = 0;  // vertices moved by untangle.h
+  std::string texture;        // what the cut's texture coordinates are (transfer.h); empty: not asked
+  bool texCoordsPulled = false;
   int cutVertices = 0, cutFaces = 0;
   int pointsAdded = 0;        // vertices surgery added where rims opened (surgery.h, step 4)
   int cutBoundaryLoops = 0;

@@ -25,23 +25,13 @@ LayerDocument<MeshModel> Layers(MeshDocument &md) {
   doc.layers = LayerIds(md);
   doc.layer = [&md](int id) { return md.getMesh(id); };
   doc.add = [&md](const QString &label) { return md.addNewMesh("", label, false); };
+  // 2025.07 layers hold their texture images: the new layer needs them to be saved and
+  // shown with its textures.
+  doc.copyTextureImages = [](MeshModel &to, const MeshModel &from) {
+    for (const std::string &name : to.cm.textures)
+      if (from.getTextures().count(name) && !to.getTextures().count(name)) to.addTexture(name, from.getTexture(name));
+  };
   return doc;
-}
-
-// 2025.07 layers hold their texture images (2020.09 loads them when drawing): give each
-// layer made after `before` the images, from the first of `from` that has them, of the
-// texture names it carries (the target's when its texture was transferred, else the
-// source's), so that pymeshlab saves and shows the new layers with their textures.
-void CopyTextureImages(MeshDocument &md, const std::vector<int> &before, const std::vector<int> &from) {
-  for (MeshModel &m : md.meshIterator()) {
-    if (std::find(before.begin(), before.end(), m.id()) != before.end()) continue;
-    for (const std::string &name : m.cm.textures)
-      for (int id : from) {
-        const MeshModel *source = md.getMesh(id);
-        if (m.getTextures().count(name) || !source->getTextures().count(name)) continue;
-        m.addTexture(name, source->getTexture(name));
-      }
-  }
 }
 
 }  // namespace
@@ -104,7 +94,6 @@ std::map<std::string, QVariant> FilterEulermapPlugin::applyFilter(const QAction 
     // Reported as PyMeshLabException "Failed to apply filter: ...\nDetails: <message>".
     throw MLException(error);
   }
-  CopyTextureImages(md, layers.layers, {request.targetLayer, request.sourceLayer});
   return ReportFigures(result.report);
 }
 

@@ -98,13 +98,23 @@ bool MapLayers(const Request &request, InputLayer &source, InputLayer &target, c
     return false;
   log << notes;
 
+  Options options = request.options;
+  options.transferColour = request.transferColorQuality && target.has.vertexColours;
+  options.transferQuality = request.transferColorQuality && target.has.vertexQuality;
+  if (request.transferColorQuality && !target.has.vertexColours && !target.has.vertexQuality)
+    log << QString("note: transfer_color_quality: the target '%1' has no per-vertex colour or quality, so "
+                   "none is transferred").arg(target.label);
+  if (request.options.transferTexture && !target.has.wedgeTexCoords && !target.has.vertexTexCoords)
+    log << QString("note: transfer_texture: the target '%1' has no texture coordinates, so none are pulled; "
+                   "the _cut layer keeps the source's own, if any").arg(target.label);
+
   const int span = kProgressCoreEnd - kProgressCoreBegin;
   const Progress coreProgress = [&](double share, const std::string &stage) {
     const double s = share < 0 ? 0 : share > 1 ? 1 : share;
     return progress ? progress(kProgressCoreBegin + int(s * span), QString::fromStdString(stage)) : true;
   };
   try {
-    ComputeMap(source.mesh, target.mesh, anchors, request.options, result, coreProgress);
+    ComputeMap(source.mesh, target.mesh, anchors, options, result, coreProgress);
   } catch (const Error &e) {
     error = QString::fromStdString(e.what());
     return false;
@@ -125,10 +135,18 @@ QString OutputLabel(const QString &sourceLabel, const char *suffix) {
   return (base.isEmpty() ? sourceLabel : base) + "_" + suffix;
 }
 
-LayerComponents OutputComponents(const Request &request, const InputLayer &source, const InputLayer &target) {
-  LayerComponents out;
-  const bool targetHasTexture = target.has.wedgeTexCoords || target.has.vertexTexCoords;
-  out.wedgeTexCoords = (request.options.transferTexture && targetHasTexture) || source.has.wedgeTexCoords;
+OutputLayers OutputComponents(const Request &request, const InputLayer &source, const InputLayer &target,
+                              const Report &report) {
+  OutputLayers out;
+  out.mapped = source.has;  // the forward method: the source's own texture coordinates and colours
+  out.mapped.vertexQuality = true;
+  out.cut = out.mapped;
+  if (report.texCoordsPulled) {  // per wedge, in the target's textures
+    out.cut.wedgeTexCoords = true;
+    out.cut.vertexTexCoords = false;
+    out.cutHasTargetTextures = true;
+  }
+  out.cut.vertexColours = source.has.vertexColours || (request.transferColorQuality && target.has.vertexColours);
   return out;
 }
 

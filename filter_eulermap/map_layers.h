@@ -52,8 +52,13 @@ bool MapLayers(const Request &request, InputLayer &source, InputLayer &target, c
 // Names of the new layers: "<source base name>_cut" etc.
 QString OutputLabel(const QString &sourceLabel, const char *suffix);
 
-// Which texture coordinates the new layers carry.
-LayerComponents OutputComponents(const Request &request, const InputLayer &source, const InputLayer &target);
+// What the new layers carry, and whose textures.
+struct OutputLayers {
+  LayerComponents cut, mapped;  // the _filled layer carries what the cut does
+  bool cutHasTargetTextures = false;  // the cut's texture names are the target's (else the source's)
+};
+OutputLayers OutputComponents(const Request &request, const InputLayer &source, const InputLayer &target,
+                              const Report &report);
 
 // "new layer spot_cut: 2930 vertices, 5856 faces", for the log.
 QString LayerLine(const QString &label, const Mesh &mesh);

@@ -17,10 +17,12 @@
 
 namespace eulermap::plugin {
 
-// What a layer carries besides positions and faces.
+// What a layer carries besides positions and faces (MeshLab's data mask).
 struct LayerComponents {
   bool vertexTexCoords = false;
   bool wedgeTexCoords = false;
+  bool vertexColours = false;
+  bool vertexQuality = false;
 };
 
 // in:  `layer` (deleted elements are skipped), and which optional components it has

@@ -62,9 +62,17 @@ const std::vector<ParameterSpec> &Parameters() {
        "Also make the _filled layer: the cut source with the holes left by surgery closed again.",
        {}},
       {param::kTransferTexture, K::Bool, defaults.transferTexture, "Transfer texture",
-       "When the target has texture coordinates, pull them back onto the _cut layer (per wedge) "
-       "together with the target's texture file names, so the source shows the target's "
-       "texture.",
+       "When the target has texture coordinates (per wedge or per vertex), pull them back onto "
+       "the _cut layer, per wedge, read at each vertex's image on the target, together with the "
+       "target's texture file names, so the source shows the target's texture (paper, Sec. 4.1). "
+       "A face never mixes two charts of the target's texture. The _mapped layer always keeps "
+       "the source's own texture coordinates and texture: the source's texture on the target's "
+       "shape.",
+       {}},
+      {param::kTransferColorQuality, K::Bool, false, "Transfer colour and quality",
+       "Also pull the target's per-vertex colour and quality, those it has, onto the _cut layer "
+       "through the map (interpolated at each vertex's image). The _cut layer's vertex quality "
+       "then is the target's instead of the local distortion.",
        {}},
   };
   return specs;
@@ -82,10 +90,10 @@ QString FilterDescription() {
          "the faces around it are cut from the source.<br><br>"
          "New layers: <b>&lt;source&gt;_cut</b> (the source minus the removed discs, original "
          "positions, per-vertex attribute <i>TargetPosition</i>, vertex quality = local "
-         "distortion, texture coordinates from the target when asked), "
+         "distortion, texture coordinates, colour and quality from the target when asked), "
          "<b>&lt;source&gt;_mapped</b> (same vertices and faces, at their images on the "
-         "target) and, on request, <b>&lt;source&gt;_filled</b>. The input layers are not "
-         "changed. The log reports the grid, the anchors, every saddle and hole, the time per "
+         "target, with the source's own texture) and, on request, <b>&lt;source&gt;_filled</b>. "
+         "The input layers are not changed. The log reports the grid, the anchors, every saddle and hole, the time per "
          "stage and the map's quality.<br><br>"
          "See: <br>"
          "<i>Hyeongjun Park, Youngjoong Cho, Seungbae Bang, Sung-Hee Lee</i><br>"
@@ -110,6 +118,7 @@ Request ReadRequest(const std::function<QVariant(const ParameterSpec &)> &value)
     else if (p.name == param::kAnchorPairs) r.anchorPairs = v.toString().trimmed();
     else if (p.name == param::kFillHoles) r.options.fillHoles = v.toBool();
     else if (p.name == param::kTransferTexture) r.options.transferTexture = v.toBool();
+    else if (p.name == param::kTransferColorQuality) r.transferColorQuality = v.toBool();
   }
   return r;
 }

@@ -31,6 +31,7 @@ inline const char *const kTargetAnchors = "target_anchors";
 inline const char *const kAnchorPairs = "anchor_pairs";
 inline const char *const kFillHoles = "fill_holes";
 inline const char *const kTransferTexture = "transfer_texture";
+inline const char *const kTransferColorQuality = "transfer_color_quality";
 }  // namespace param
 
 enum class ParameterKind { Mesh, Int, Float, Enum, Bool, OpenFile, String };
@@ -62,6 +63,8 @@ struct Request {
   QString sourceAnchors;  // .pp file; empty: the .pp beside the source's file, if any
   QString targetAnchors;
   QString anchorPairs;    // "12:305, 40:77"; the other way to give anchors
+  bool transferColorQuality = false;  // the target's vertex colour and quality onto the cut,
+                                      // those the target has (MapLayers sets the Options)
 };
 
 // Reads every parameter through `value` (called once per ParameterSpec; Mesh parameters

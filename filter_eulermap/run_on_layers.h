@@ -27,6 +27,9 @@ struct LayerDocument {
   std::function<Model *(int)> layer;            // the layer with that number
   std::function<Model *(const QString &)> add;  // a new, empty layer with that label; the current
                                                 // layer stays as it is
+  // Gives a new layer the texture images of a layer (null where layers hold only texture
+  // file names: 2020.09 loads the images when drawing; 2025.07 layers hold them).
+  std::function<void(Model &to, const Model &from)> copyTextureImages;
 };
 
 // in:  a layer
@@ -37,19 +40,23 @@ void ToInput(const Model &m, InputLayer &layer) {
   layer.fileName = m.fullName();
   layer.has.vertexTexCoords = m.hasDataMask(Model::MM_VERTTEXCOORD);
   layer.has.wedgeTexCoords = m.hasDataMask(Model::MM_WEDGTEXCOORD);
+  layer.has.vertexColours = m.hasDataMask(Model::MM_VERTCOLOR);
+  layer.has.vertexQuality = m.hasDataMask(Model::MM_VERTQUALITY);
   LayerToCore(m.cm, layer.has, layer.mesh);
 }
 
 // in:  a new layer `m`, the mesh to put there, which texture coordinates it carries and,
 //      for the cut layer, the images of its vertices
-// out: `m` holds `mesh` with vertex quality; with `targetPositions`, their vertices (the
-//      i-th non-deleted one for the i-th vertex) become its per-vertex attribute
-//      "TargetPosition"
+// out: `m` holds `mesh` with the components `has` names; with `targetPositions`, their
+//      vertices (the i-th non-deleted one for the i-th vertex) become its per-vertex
+//      attribute "TargetPosition"
 template <class Model>
 void FillLayer(Model &m, const Mesh &mesh, const LayerComponents &has, const Mesh *targetPositions) {
   using LayerMesh = decltype(m.cm);
   using Point = typename LayerMesh::CoordType;
-  int mask = Model::MM_VERTQUALITY;
+  int mask = Model::MM_NONE;
+  if (has.vertexQuality) mask |= Model::MM_VERTQUALITY;
+  if (has.vertexColours) mask |= Model::MM_VERTCOLOR;
   if (has.wedgeTexCoords) mask |= Model::MM_WEDGTEXCOORD;
   if (has.vertexTexCoords) mask |= Model::MM_VERTTEXCOORD;
   m.updateDataMask(mask);
@@ -95,17 +102,20 @@ bool RunOnLayers(const Request &request, const LayerDocument<Model> &doc, const 
   if (!ok) return false;
 
   progress(kProgressCoreEnd, "Eulerian map: making layers");
-  const LayerComponents out = OutputComponents(request, source, target);
-  const auto addLayer = [&](const char *suffix, const Mesh &mesh, const Mesh *targetPositions) {
+  const OutputLayers out = OutputComponents(request, source, target, result.report);
+  const Model &cutTextures = *doc.layer(out.cutHasTargetTextures ? request.targetLayer : request.sourceLayer);
+  const auto addLayer = [&](const char *suffix, const Mesh &mesh, const LayerComponents &has,
+                            const Model &textures, const Mesh *targetPositions) {
     Model *m = doc.add(OutputLabel(source.label, suffix));
-    FillLayer(*m, mesh, out, targetPositions);
+    FillLayer(*m, mesh, has, targetPositions);
+    if (doc.copyTextureImages) doc.copyTextureImages(*m, textures);
     log(LayerLine(m->label(), mesh));
   };
-  addLayer("cut", result.cut, &result.mapped);
-  addLayer("mapped", result.mapped, nullptr);
+  addLayer("cut", result.cut, out.cut, cutTextures, &result.mapped);
+  addLayer("mapped", result.mapped, out.mapped, *doc.layer(request.sourceLayer), nullptr);
   if (request.options.fillHoles) {
     if (result.filled.FN() > 0)
-      addLayer("filled", result.filled, nullptr);
+      addLayer("filled", result.filled, out.cut, cutTextures, nullptr);
     else
       log("warning: fill_holes gave no faces, so no " + OutputLabel(source.label, "filled") + " layer was made");
   }

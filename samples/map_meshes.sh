@@ -86,6 +86,7 @@ cat > "$script" <<EOF
   <Param type="RichString" name="anchor_pairs" value=""/>
   <Param type="RichBool" name="fill_holes" value="false"/>
   <Param type="RichBool" name="transfer_texture" value="true"/>
+  <Param type="RichBool" name="transfer_color_quality" value="false"/>
  </filter>
 </FilterScript>
 EOF

@@ -149,23 +149,30 @@ void MakeDoubleTorus(Mesh &m, double r, int cells) {
   Finish(m);
 }
 
-void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv, int tubeDiv) {
+void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv, int tubeDiv, TexCoordKind texCoords) {
   m.Clear();
-  vcg::tri::Allocator<Mesh>::AddVertices(m, ringDiv * tubeDiv);
-  for (int i = 0; i < ringDiv; ++i)
-    for (int j = 0; j < tubeDiv; ++j) {
+  // Grid (i, j), i along the ring, j around the tube; with doubled seams i = ringDiv and
+  // j = tubeDiv are vertices of their own, else they wrap to 0.
+  const bool split = texCoords == TexCoordKind::PerVertex;
+  const int ni = ringDiv + split, nj = tubeDiv + split;
+  vcg::tri::Allocator<Mesh>::AddVertices(m, ni * nj);
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < nj; ++j) {
       const double u = 2 * M_PI * i / ringDiv, v = 2 * M_PI * j / tubeDiv;
-      auto &vert = m.vert[i * tubeDiv + j];
+      auto &vert = m.vert[i * nj + j];
       vert.P() = centre + Point3((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-      vert.T().U() = double(i) / ringDiv;
-      vert.T().V() = double(j) / tubeDiv;
+      if (split) vert.T().P() = vcg::Point2d(double(i) / ringDiv, double(j) / tubeDiv);
     }
+  auto id = [&](int i, int j) { return split ? i * nj + j : (i % ringDiv) * nj + j % tubeDiv; };
   for (int i = 0; i < ringDiv; ++i)
     for (int j = 0; j < tubeDiv; ++j) {
-      const int a = i * tubeDiv + j, b = ((i + 1) % ringDiv) * tubeDiv + j;
-      const int c = ((i + 1) % ringDiv) * tubeDiv + (j + 1) % tubeDiv, d = i * tubeDiv + (j + 1) % tubeDiv;
-      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
-      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+      const int corners[2][3][2] = {{{i, j}, {i + 1, j}, {i + 1, j + 1}}, {{i, j}, {i + 1, j + 1}, {i, j + 1}}};
+      for (const auto &tri : corners) {
+        auto f = vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[id(tri[0][0], tri[0][1])], &m.vert[id(tri[1][0], tri[1][1])],
+                                                    &m.vert[id(tri[2][0], tri[2][1])]);
+        if (texCoords == TexCoordKind::PerWedge)
+          for (int c = 0; c < 3; ++c) f->WT(c).P() = vcg::Point2d(double(tri[c][0]) / ringDiv, double(tri[c][1]) / tubeDiv);
+      }
     }
   Finish(m);
 }

@@ -1,6 +1,7 @@
 // Test and benchmark support: loading the shared meshes and making analytic shapes.
 #pragma once
 
+#include "core/charts.h"
 #include "core/mesh.h"
 
 #include <string>
@@ -20,9 +21,13 @@ void LoadMesh(const std::string &path, Mesh &m);
 void MakeSphere(Mesh &m, const Point3 &centre, double radius, int subdivisions = 4);
 void MakeEllipsoid(Mesh &m, const Point3 &centre, const Point3 &radii, int subdivisions = 4);
 void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide = 1);  // 8 vertices with cellsPerSide = 1
-// Torus around the z axis: ring radius R, tube radius r; per-vertex texcoords = the
-// (ring, tube) angles / 2pi.
-void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv = 64, int tubeDiv = 32);
+// Torus around the z axis: ring radius R, tube radius r; texture coordinates (u, v) = the
+// (ring, tube) angles / 2pi, in [0, 1], seams where an angle is 0. PerWedge: closed (the
+// seams only in the wedges' coordinates: a face over a seam has u = 1 or v = 1 where its
+// neighbour has 0); PerVertex: each seam's vertices doubled (u = 0 and u = 1 copies), so
+// the mesh is open along the two seam circles; None: no coordinates.
+void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv = 64, int tubeDiv = 32,
+               TexCoordKind texCoords = TexCoordKind::PerWedge);
 
 // Genus 2: the zero set of (x^2 (1 - x^2) - y^2)^2 + z^2 - r^2, a tube around the figure
 // eight y^2 = x^2 (1 - x^2) (two loops crossing at the origin) in [-1.2, 1.2] x [-0.8, 0.8]
