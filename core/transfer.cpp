@@ -3,6 +3,7 @@
 #include <vcg/simplex/face/distance.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace eulermap {
@@ -103,8 +104,11 @@ void PullVertexAttributes(Mesh &cut, const std::vector<ClosestHit> &hits, bool c
     if (v.IsD()) continue;
     const Face &f = *hits[n].face;
     const Point3 &w = hits[n].barycentric;
-    if (colour)
-      v.C().lerp(f.cV(0)->cC(), f.cV(1)->cC(), f.cV(2)->cC(), vcg::Point3f(float(w[0]), float(w[1]), float(w[2])));
+    if (colour)  // rounded per channel (vcglib's Color4b::lerp truncates: 50 everywhere could read 49)
+      for (int k = 0; k < 4; ++k) {
+        const double c = w[0] * f.cV(0)->cC()[k] + w[1] * f.cV(1)->cC()[k] + w[2] * f.cV(2)->cC()[k];
+        v.C()[k] = (unsigned char)std::lround(std::clamp(c, 0.0, 255.0));
+      }
     if (quality) v.Q() = w[0] * f.cV(0)->cQ() + w[1] * f.cV(1)->cQ() + w[2] * f.cV(2)->cQ();
   }
 }

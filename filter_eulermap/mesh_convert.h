@@ -28,7 +28,7 @@ struct LayerComponents {
 // in:  `layer` (deleted elements are skipped), and which optional components it has
 //      enabled (MeshLab's data mask)
 // out: `core`: positions, normals, colours, per-vertex and per-wedge texture coordinates
-//      when present, texture names; bounding box, normals and face-face / vertex-face
+//      when present, vertex quality, texture names; bounding box, normals and face-face / vertex-face
 //      adjacency updated (the core copies meshes with their adjacency). Vertex i of
 //      `core` is the i-th non-deleted vertex of `layer`.
 template <class LayerMesh>
@@ -44,6 +44,7 @@ void LayerToCore(const LayerMesh &layer, const LayerComponents &has, Mesh &core)
     w.P().Import(v.cP());
     w.N().Import(v.cN());
     w.C() = v.cC();
+    if (has.vertexQuality) w.Q() = v.cQ();
     if (has.vertexTexCoords) w.T().Import(v.cT());
     index[i] = n++;
   }

@@ -24,10 +24,10 @@
 #   --timeout S     give up after S seconds (default 180)
 #   --keep          keep the work folder (the MeshLab project, its log, the screenshot)
 #   --readme        make the README's pictures from real runs of the current plugin:
-#                   samples/map_meshes.sh sphere -> torus and spot -> cow (6 anchors)
-#                   into out/pictures/, then docs/pictures/sphere_to_torus.png and
-#                   docs/pictures/spot_to_cow.png: source | target | cut source (with the
-#                   texture pulled from the target, if any) | mapped source
+#                   samples/map_meshes.sh sphere -> torus, spot -> cow and cow -> spot
+#                   (6 anchors) into out/pictures/, then docs/pictures/<pair>.png:
+#                   source | target | cut source (with the texture pulled from the
+#                   target, if any) | mapped source (with the source's own, if any)
 # Needs meshlab, xvfb-run, xdotool, ImageMagick (import, convert) and python3. Settings
 # go to a private HOME in the work folder: the user's MeshLab settings are not touched.
 # Exits non-zero with a message when a mesh or texture cannot be loaded or MeshLab does
@@ -116,6 +116,7 @@ if [ "${1:-}" = --readme ]; then
   mkdir -p "$out" docs/pictures
   samples/map_meshes.sh samples/sphere.ply samples/torus.ply "$out/sphere_to_torus" > "$out/sphere_to_torus.txt"
   samples/map_meshes.sh samples/spot.ply samples/cow.off "$out/spot_to_cow" > "$out/spot_to_cow.txt"
+  samples/map_meshes.sh samples/cow.off samples/spot.ply "$out/cow_to_spot" > "$out/cow_to_spot.txt"
   # sphere -> torus: seen from above the torus's axis, a little tilted
   "$0" docs/pictures/sphere_to_torus.png --textures samples --rotate-x -25 \
     samples/sphere.ply samples/torus.ply "$out/sphere_to_torus/cut.ply" "$out/sphere_to_torus/mapped.ply"
@@ -123,10 +124,14 @@ if [ "${1:-}" = --readme ]; then
   "$0" docs/pictures/spot_to_cow.png --textures samples \
     --rotate-x 15 --rotate-y -120 samples/spot.ply --rotate-y -30 samples/cow.off \
     --rotate-y -120 "$out/spot_to_cow/cut.ply" --rotate-y -30 "$out/spot_to_cow/mapped.ply"
-  for pair in sphere_to_torus spot_to_cow; do
+  # cow -> spot: the cow takes spot's texture through the map
+  "$0" docs/pictures/cow_to_spot.png --textures samples \
+    --rotate-x 15 --rotate-y -30 samples/cow.off --rotate-y -120 samples/spot.ply \
+    --rotate-y -30 "$out/cow_to_spot/cut.ply" --rotate-y -120 "$out/cow_to_spot/mapped.ply"
+  for pair in sphere_to_torus spot_to_cow cow_to_spot; do
     grep -E "^(cut source|map quality)" "$out/$pair/report.txt" | sed "s/^/$pair: /"
   done
-  echo "wrote docs/pictures/sphere_to_torus.png, docs/pictures/spot_to_cow.png"
+  echo "wrote docs/pictures/sphere_to_torus.png, docs/pictures/spot_to_cow.png, docs/pictures/cow_to_spot.png"
   exit 0
 fi
 

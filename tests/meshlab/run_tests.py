@@ -50,9 +50,16 @@ CRASH_CODES = {134, 136, 139, -6, -8, -11}  # abort, FPE, segfault (as exit code
 
 # (name, source, target, expected cut topology, extra checks)
 SAMPLE_RUNS = [
-    ("sphere_to_torus", "sphere.ply", "torus.ply", dict(components=1, loops=2, chi=0, texture="torus_checker.png")),
+    ("sphere_to_torus", "sphere.ply", "torus.ply",
+     dict(components=1, loops=2, chi=0, texture="torus_checker.png", mapped_texture=None)),
     ("torus_to_sphere", "torus.ply", "sphere.ply", dict(components=1, loops=2, chi=0, filled=True)),
-    ("spot_to_cow", "spot.ply", "cow.off", dict(components=1, loops=0, chi=2, anchors="spot.pp")),
+    # the cow has no texture: the cut keeps spot's own, the mapped layer shows it on the cow (forward)
+    ("spot_to_cow", "spot.ply", "cow.off",
+     dict(components=1, loops=0, chi=2, anchors="spot.pp", texture="spot_checker.png",
+          mapped_texture="spot_checker.png", note="note: transfer_texture: the target 'cow.off' has no texture coordinates")),
+    ("cow_to_spot", "cow.off", "spot.ply",
+     dict(components=1, loops=0, chi=2, anchors="cow.pp", texture="spot_checker.png", mapped_texture=None,
+          log="texture: pulled per wedge from the target's per-wedge coordinates")),
     ("rocker-arm_to_sphere", "rocker-arm.ply", "sphere.ply", dict(components=1, loops=2, chi=0)),
 ]
 
@@ -210,6 +217,20 @@ def make_sample_test(name, source, target, expect):
         if "texture" in expect:
             check("texcoord" in c.face_props, "the cut layer has no wedge texture coordinates")
             check(f"TextureFile {expect['texture']}" in c.comments, f"the cut layer does not name {expect['texture']}")
+        if "mapped_texture" in expect:  # the forward method: the source's own texture, or none
+            if expect["mapped_texture"]:
+                s = meshes.read_mesh(os.path.join(SAMPLES, source))
+                check("texcoord" in m.face_props and m.faces == s.faces and
+                      max(abs(p - q) for u, v in zip(m.face_props["texcoord"], s.face_props["texcoord"])
+                          for p, q in zip(u, v)) < 1e-6,
+                      "the mapped layer does not carry the source's own wedge texture coordinates")
+                check(f"TextureFile {expect['mapped_texture']}" in m.comments,
+                      f"the mapped layer does not name {expect['mapped_texture']}")
+            else:
+                check("texcoord" not in m.face_props and not any("TextureFile" in x for x in m.comments),
+                      "the mapped layer has texture coordinates though the source has none")
+        for line in (expect.get("note"), expect.get("log")):
+            check(not line or any(l.startswith(line) for l in report), f"the log lacks a '{line}...' line")
         tgt = meshes.read_mesh(os.path.join(SAMPLES, target))
         tol = 0.005 * meshes.diagonal(tgt.verts)
         rate = meshes.on_surface_rate(m.verts, tgt, tol)
@@ -294,9 +315,10 @@ def test_render_script():
     """samples/render.sh draws a real output with MeshLab: sphere -> torus (small grid),
     then sphere | cut sphere with the torus's checker pulled | mapped layer, 1200x300.
     Measured in the PNG: its size, three separate drawings left to right, the plain
-    sphere without the checker's blue, both textured layers with the checker's blue and
-    white cells alternating along their middle row (MeshLab's stand-in for a missing
-    image, dummy.png, is a grey checker: no blue). A texture found nowhere is an error."""
+    sphere and the mapped layer (the forward method: the sphere's own texture, none)
+    without the checker's blue, the cut with the checker's blue and white cells
+    alternating along its middle row (MeshLab's stand-in for a missing image, dummy.png,
+    is a grey checker: no blue). A texture found nowhere is an error."""
     outdir = os.path.join(OUT, "render")
     shutil.rmtree(outdir, ignore_errors=True)
     p = subprocess.run([os.path.join(SAMPLES, "map_meshes.sh"), os.path.join(SAMPLES, "sphere.ply"),
@@ -345,8 +367,9 @@ def test_render_script():
         shares.append((sum(map(blue, px)) / len(px), sum(map(white, px)) / len(px)))
     note(f"render.sh: {seconds:.1f} s; drawings at columns {runs}; (blue, white) shares "
          + ", ".join(f"({b:.2f}, {w:.2f})" for b, w in shares))
-    check(shares[0][0] < 0.01, f"the plain sphere shows the checker's blue ({100 * shares[0][0]:.1f}% of its pixels)")
-    for (x0, x1), (b, w), name in zip(runs[1:], shares[1:], ("cut", "mapped")):
+    for (b, w), name in ((shares[0], "plain sphere"), (shares[2], "mapped layer")):
+        check(b < 0.01, f"the {name} shows the checker's blue ({100 * b:.1f}% of its pixels)")
+    for (x0, x1), (b, w), name in ((runs[1], shares[1], "cut"),):
         check(b > 0.2 and w > 0.15, f"the {name} layer is not drawn with the checker: {100 * b:.0f}% blue, {100 * w:.0f}% white")
         row, kinds = [pixel(x, height // 2) for x in range(x0, x1)], []
         for c in row:

@@ -92,7 +92,14 @@ def test_sample(name, source, target, expect):
     if "texture" in expect:
         assert "texcoord" in c.face_props, "the cut layer has no wedge texture coordinates"
         assert f"TextureFile {expect['texture']}" in c.comments, f"the cut layer does not name {expect['texture']}"
-        assert os.path.isfile(os.path.join(outdir, expect["texture"])), "the target's texture image was not saved"
+        assert os.path.isfile(os.path.join(outdir, expect["texture"])), "the texture image was not saved"
+    if expect.get("mapped_texture"):  # the forward method: the source's own coordinates and image
+        s = meshes.read_mesh(src)
+        assert "texcoord" in m.face_props and np.allclose(m.face_props["texcoord"], s.face_props["texcoord"], atol=1e-6), \
+            "the mapped layer lacks the source's coordinates"
+        assert f"TextureFile {expect['mapped_texture']}" in m.comments, f"mapped.ply does not name {expect['mapped_texture']}"
+    for line in (expect.get("note"), expect.get("log")):
+        assert not line or any(l.startswith(line) for l in log), f"the log lacks a '{line}...' line"
 
     t = meshes.read_mesh(tgt)
     rate = meshes.on_surface_rate(m.verts, t, 0.005 * meshes.diagonal(t.verts))
@@ -107,6 +114,36 @@ def test_sample(name, source, target, expect):
     assert topo == (expect["components"], expect["loops"], expect["chi"]), f"cut layer: {topo}, expected {expect}"
     assert (figures["cut_components"], figures["cut_boundary_loops"], figures["cut_euler_characteristic"]) == topo
     assert (figures["cut_vertices"], figures["cut_faces"]) == (len(c.verts), len(c.faces))
+
+
+def test_colour_and_quality_follow_the_map():
+    """transfer_color_quality: the cut sphere takes the torus's vertex colour and quality
+    (linear functions of the position, set by pymeshlab's own filters) at each vertex's
+    image; without them on the target, a note and the distortion stays the quality."""
+    ms = mesh_set(_SPHERE, _TORUS)
+    ms.set_current_mesh(1)
+    ms.compute_color_by_function_per_vertex(x="127+90*x", y="50", z="200")
+    ms.compute_scalar_by_function_per_vertex(q="3*x+2*y-z")
+    ms.set_current_mesh(0)
+    log = []
+    map_meshes.apply_logged(ms, log, target_mesh=1, grid_resolution=32, steps=20, transfer_color_quality=True)
+    cut, mapped = ms.mesh(2), ms.mesh(3)
+    p = mapped.vertex_matrix()
+    assert cut.has_vertex_color() and cut.has_vertex_scalar()
+    red = cut.vertex_color_matrix()[:, 0] * 255
+    colour_error = np.abs(red - (127 + 90 * p[:, 0])).max()
+    quality_error = np.abs(cut.vertex_scalar_array() - (3 * p[:, 0] + 2 * p[:, 1] - p[:, 2])).max()
+    print(f"\n    largest colour error {colour_error:.2f} levels, quality error {quality_error:.1e}")
+    # MeshLab's function filter truncates the target's channels to 8 bits (up to 1 level
+    # off), the interpolated colour is rounded again: 2 levels at most, far from a wrong image.
+    assert colour_error <= 2.5 and np.allclose(cut.vertex_color_matrix()[:, 1:3] * 255, [50, 200], atol=0.5)
+    assert quality_error <= 1e-4
+
+    ms, log = mesh_set(_SPHERE, _TORUS), []
+    map_meshes.apply_logged(ms, log, target_mesh=1, grid_resolution=24, steps=8, transfer_color_quality=True)
+    assert any(l.startswith("note: transfer_color_quality: the target 'torus.ply' has no per-vertex colour or quality")
+               for l in log), log
+    assert ms.mesh(2).vertex_scalar_array().min() >= 0, "the cut's quality is not the distortion (>= 0)"
 
 
 def test_map_meshes_command():

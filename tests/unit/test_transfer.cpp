@@ -190,7 +190,7 @@ TEST(Transfer, ColourAndQualityFollowTheMap) {
     qualityError = std::max(qualityError, std::fabs(v.cQ() - quality(p)));
   }
   std::printf("largest colour error %.2f levels, quality error %.2e\n", colourError, qualityError);
-  EXPECT_LE(colourError, 1.5);  // rounding of the target's and the cut's 8-bit channels
+  EXPECT_LE(colourError, 1.0);  // rounding of the target's and the cut's 8-bit channels
   EXPECT_LE(qualityError, 1e-9);
 }
 
