@@ -3,9 +3,36 @@
 #include "rich_parameters.h"
 #include "run_on_layers.h"
 
+#include <QApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QTimer>
+#include <QWidget>
+
 using namespace eulermap::plugin;
 
 namespace {
+
+// MeshLab 2020.09 keeps a layer's texture images in the GUI's OpenGL context and loads
+// them only when it opens a file (MainWindow::updateTexture, with the current folder set
+// to the file's; src/meshlab/mainwindow_RunTime.cpp): a filter's new layer would be drawn
+// without them. So, once the filter has returned, ask the main window to load the layer's
+// images from `folder`, the folder of the layer whose texture names it carries. Without
+// a main window (meshlabserver) there is nothing to draw and nothing to do.
+void LoadTexturesInGui(const MeshModel &layer, const QString &folder) {
+  if (layer.cm.textures.empty() || !qobject_cast<QApplication *>(QCoreApplication::instance())) return;
+  for (QWidget *window : QApplication::topLevelWidgets()) {
+    if (!window->inherits("MainWindow")) continue;
+    const int id = layer.id();
+    QTimer::singleShot(0, window, [window, id, folder] {
+      const QString current = QDir::currentPath();
+      QDir::setCurrent(folder);
+      QMetaObject::invokeMethod(window, "updateTexture", Qt::DirectConnection, Q_ARG(int, id));
+      QDir::setCurrent(current);
+    });
+    return;
+  }
+}
 
 // The document's layers, numbered by their position (as .mlx scripts and RichMesh do).
 LayerDocument<MeshModel> Layers(MeshDocument &md) {
@@ -13,6 +40,9 @@ LayerDocument<MeshModel> Layers(MeshDocument &md) {
   for (int i = 0; i < md.size(); ++i) doc.layers.push_back(i);
   doc.layer = [&md](int i) { return md.meshList.at(i); };
   doc.add = [&md](const QString &label) { return md.addNewMesh("", label, false); };
+  doc.copyTextureImages = [](MeshModel &to, const MeshModel &from) {
+    LoadTexturesInGui(to, QFileInfo(from.fullName()).absolutePath());
+  };
   return doc;
 }
 

@@ -27,8 +27,8 @@ struct LayerDocument {
   std::function<Model *(int)> layer;            // the layer with that number
   std::function<Model *(const QString &)> add;  // a new, empty layer with that label; the current
                                                 // layer stays as it is
-  // Gives a new layer the texture images of a layer (null where layers hold only texture
-  // file names: 2020.09 loads the images when drawing; 2025.07 layers hold them).
+  // Gives a new layer the texture images of a layer whose texture names it carries
+  // (2025.07 layers hold their images; 2020.09's GUI loads them into its OpenGL context).
   std::function<void(Model &to, const Model &from)> copyTextureImages;
 };
 

@@ -116,7 +116,7 @@ if [ "${1:-}" = --readme ]; then
   mkdir -p "$out" docs/pictures
   samples/map_meshes.sh samples/sphere.ply samples/torus.ply "$out/sphere_to_torus" > "$out/sphere_to_torus.txt"
   samples/map_meshes.sh samples/spot.ply samples/cow.off "$out/spot_to_cow" > "$out/spot_to_cow.txt"
-  samples/map_meshes.sh samples/cow.off samples/spot.ply "$out/cow_to_spot" > "$out/cow_to_spot.txt"
+  samples/map_meshes.sh samples/cow.off samples/spot.ply "$out/cow_to_spot" --grid 80 > "$out/cow_to_spot.txt"  # as cow_to_spot.mlx
   # sphere -> torus: seen from above the torus's axis, a little tilted
   "$0" docs/pictures/sphere_to_torus.png --textures samples --rotate-x -25 \
     samples/sphere.ply samples/torus.ply "$out/sphere_to_torus/cut.ply" "$out/sphere_to_torus/mapped.ply"

@@ -167,7 +167,8 @@ def test_meshlabserver_lists_filter():
 
 def test_sample_scripts_complete():
     names = plugin_parameter_names()
-    check(len(names) == 12, f"expected the 12 parameters of issue 4 (with source_mesh), found {names}")
+    check(len(names) == 13, f"expected the 12 parameters of issue 4 (with source_mesh) and issue 6's "
+                            f"transfer_color_quality, found {names}")
     scripts = sorted(glob.glob(os.path.join(SAMPLES, "*.mlx")))
     check(len(scripts) >= 4, f"expected the 4 sample scripts, found {scripts}")
     for s in scripts:
@@ -467,9 +468,18 @@ def test_gui():
     if not have_xdotool:
         note("GUI: plugin loaded; xdotool missing, so the Filters menu was not driven (apt-get install xdotool)")
         return
-    check("new layer torus_cut" in log and "new layer torus_mapped" in log,
+    check("new layer sphere_cut" in log and "new layer sphere_mapped" in log,
           "the filter run from Filters > Remeshing > Eulerian Surface Map made no layers; see the screenshots")
     check("ALIVE_AFTER_FILTER" in p.stdout, "meshlab did not survive the filter run")
+    # The cut sphere alone in the 3D view (x < 430, 70 < y < 585 of the 1280x960 screen):
+    # drawn with the torus's checker, so the GUI loaded the new layer's texture image.
+    width, height, rgb = read_png(os.path.join(SHOTS, "meshlab_6_cut_only.png"))
+    px = [rgb[3 * (y * width + x):3 * (y * width + x) + 3] for x in range(0, 430, 2) for y in range(70, 585, 2)]
+    blue = sum(c[2] > c[0] + 60 and c[1] > c[0] + 30 for c in px) / len(px)  # not the background: G = R there
+    white = sum(min(c) > 150 and max(c) - min(c) < 30 for c in px) / len(px)
+    note(f"GUI: the cut sphere alone: {100 * blue:.1f}% checker blue, {100 * white:.1f}% white/grey of the 3D view")
+    check(blue > 0.05 and white > 0.05, "the cut layer is not drawn with the torus's checker in the GUI "
+                                        "(meshlab_6_cut_only.png)")
     note("GUI: screenshots " + ", ".join(os.path.relpath(s, ROOT) for s in shots))
 
 

@@ -146,6 +146,29 @@ def test_colour_and_quality_follow_the_map():
     assert ms.mesh(2).vertex_scalar_array().min() >= 0, "the cut's quality is not the distortion (>= 0)"
 
 
+def test_per_vertex_texcoords_of_the_target():
+    """A target with per-vertex texture coordinates (set by pymeshlab's own filter to a
+    linear function of the position): the cut spot takes them per wedge, equal to that
+    function at each vertex's image; the mapped layer keeps spot's own coordinates."""
+    ms = mesh_set(os.path.join(SAMPLES, "spot.ply"), _SPHERE)
+    ms.set_current_mesh(1)
+    ms.compute_texcoord_by_function_per_vertex(u="0.5+0.3*x", v="0.5+0.3*y")
+    assert ms.current_mesh().has_vertex_tex_coord() and not ms.current_mesh().has_wedge_tex_coord()
+    ms.set_current_mesh(0)
+    log = []
+    map_meshes.apply_logged(ms, log, target_mesh=1, grid_resolution=32, steps=20)
+    assert any(l.startswith("texture: pulled per wedge from the target's per-vertex coordinates") for l in log), log
+    cut, mapped = ms.mesh(2), ms.mesh(3)
+    assert cut.has_wedge_tex_coord()
+    p = mapped.vertex_matrix()[cut.face_matrix()].reshape(-1, 3)  # the images of the corners, wedge order
+    uv = cut.wedge_tex_coord_matrix()
+    error = np.abs(uv - np.stack([0.5 + 0.3 * p[:, 0], 0.5 + 0.3 * p[:, 1]], axis=1)).max()
+    print(f"\n    per-vertex target: largest UV error {error:.1e} over {len(uv)} wedges")
+    assert error <= 1e-5
+    assert np.allclose(mapped.wedge_tex_coord_matrix(), ms.mesh(0).wedge_tex_coord_matrix(), atol=1e-7), \
+        "the mapped layer lost the source's own coordinates"
+
+
 def test_map_meshes_command():
     outdir = os.path.join(OUT, "map_meshes")
     shutil.rmtree(outdir, ignore_errors=True)
