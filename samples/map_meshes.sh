@@ -11,15 +11,17 @@
 #   OUTDIR          gets cut.ply (the cut source: original positions, vertex quality =
 #                   distortion, texture coordinates pulled from the target when it has
 #                   them), mapped.ply (the same vertices in the same order, at their images
-#                   on the target), report.txt (the filter's log) and, for reruns and
-#                   debugging, map.mlx, meshlabserver.log and meshlabserver.out.
+#                   on the target, with the source's own texture coordinates), the texture
+#                   images they name (copied from beside the inputs), report.txt (the
+#                   filter's log) and, for reruns and debugging, map.mlx,
+#                   meshlabserver.log and meshlabserver.out.
 #   --grid N        cells on the longest axis of the grid (default 64)
 #   --steps N       time steps (default 40)
 # Needs the plugin installed (cmake --install build). Exits non-zero, with the filter's
 # message, when the map fails.
 set -euo pipefail
 
-usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
 
 if [ $# -lt 3 ]; then usage >&2; exit 2; fi
 source_mesh=$1 target_mesh=$2 out=$3
@@ -106,4 +108,12 @@ if [ "$status" -ne 0 ] || [ ! -s "$out/cut.ply" ] || [ ! -s "$out/mapped.ply" ];
   echo "map_meshes.sh: the map failed (meshlabserver exit status $status); see $log and $out/meshlabserver.out" >&2
   exit 1
 fi
+# The texture images the outputs name (MeshLab 2020.09 writes the names, not the images):
+# copied beside them from the inputs' folders, so they open textured.
+for name in $(for f in cut mapped; do sed -n '/^end_header/q; s/^comment TextureFile //p' "$out/$f.ply"; done | sort -u); do
+  [ -e "$out/$name" ] && continue
+  for dir in "$(dirname "$source_mesh")" "$(dirname "$target_mesh")"; do
+    if [ -f "$dir/$name" ]; then mkdir -p "$(dirname "$out/$name")"; cp "$dir/$name" "$out/$name"; break; fi
+  done
+done
 echo "wrote $out/cut.ply, $out/mapped.ply, $out/report.txt"

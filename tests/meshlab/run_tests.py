@@ -328,6 +328,8 @@ def test_render_script():
     check(p.returncode == 0, f"map_meshes.sh failed ({p.returncode}): {p.stderr[-500:]}")
     cut, mapped, picture = (os.path.join(outdir, f) for f in ("cut.ply", "mapped.ply", "render.png"))
     check("TextureFile torus_checker.png" in meshes.read_mesh(cut).comments, "the cut layer does not name torus_checker.png")
+    check(sha256(os.path.join(outdir, "torus_checker.png")) == sha256(os.path.join(SAMPLES, "torus_checker.png")),
+          "map_meshes.sh did not copy the texture the cut layer names beside it")
     render = os.path.join(SAMPLES, "render.sh")
     t0 = time.time()
     p = subprocess.run([render, picture, "--size", "1200x300", "--textures", SAMPLES, os.path.join(SAMPLES, "sphere.ply"),
