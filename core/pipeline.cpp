@@ -221,7 +221,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   vcg::tri::UpdateBounding<Mesh>::Box(mapped);
   vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(mapped);
 
-  rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag());
+  rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag(), &rep.quality.uncoveredParts);
   rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
   rep.quality.longestEdgeCells = LongestEdge(mapped) * place.scale / grid.h;
   rep.quality.meanDistortion = StoreDistortion(cut, mapped);
