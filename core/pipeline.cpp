@@ -240,7 +240,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
     PullVertexAttributes(cut, onTarget, options.transferColour, options.transferQuality);
   if (options.fillHoles) FillHoles(cut, result.filled);
 
-  rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag());
+  rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag(), &rep.quality.uncoveredParts);
   rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
   rep.quality.longestEdgeCells = LongestEdge(mapped) * place.scale / grid.h;
   const Topology topo = MeasureTopology(cut);

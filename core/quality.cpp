@@ -3,9 +3,56 @@
 #include <vcg/complex/algorithms/point_sampling.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <unordered_map>
 
 namespace eulermap {
+
+namespace {
+
+// Single-linkage groups of `points`: points closer than `link` share a group. A hash grid
+// of cells `link` wide finds the pairs (each point against the 27 cells around its own).
+std::vector<UncoveredPart> GroupPoints(const std::vector<Point3> &points, double link, std::size_t total) {
+  std::vector<int> parent(points.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  auto key = [&](long x, long y, long z) { return (x * 73856093L) ^ (y * 19349663L) ^ (z * 83492791L); };
+  auto cellOf = [&](const Point3 &p, int a) { return long(std::floor(p[a] / link)); };
+  std::unordered_map<long, std::vector<int>> cells;
+  for (int i = 0; i < int(points.size()); ++i)
+    cells[key(cellOf(points[i], 0), cellOf(points[i], 1), cellOf(points[i], 2))].push_back(i);
+  for (int i = 0; i < int(points.size()); ++i)
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find(key(cellOf(points[i], 0) + dx, cellOf(points[i], 1) + dy, cellOf(points[i], 2) + dz));
+          if (it == cells.end()) continue;
+          for (int j : it->second)
+            if (j > i && vcg::SquaredDistance(points[i], points[j]) < link * link) parent[find(i)] = find(j);
+        }
+  std::unordered_map<int, int> index;  // root -> part
+  std::vector<UncoveredPart> parts;
+  std::vector<std::vector<int>> members;
+  for (int i = 0; i < int(points.size()); ++i) {
+    const auto [it, added] = index.emplace(find(i), int(parts.size()));
+    if (added) parts.push_back({Point3(0, 0, 0), 0, 0}), members.emplace_back();
+    members[it->second].push_back(i);
+  }
+  for (std::size_t n = 0; n < parts.size(); ++n) {
+    for (int i : members[n]) parts[n].centre += points[i] / double(members[n].size());
+    for (int i : members[n]) parts[n].radius = std::max(parts[n].radius, vcg::Distance(points[i], parts[n].centre));
+    parts[n].share = double(members[n].size()) / total;
+  }
+  std::stable_sort(parts.begin(), parts.end(), [](const UncoveredPart &a, const UncoveredPart &b) { return a.share > b.share; });
+  return parts;
+}
+
+} // namespace
 
 double OnSurfaceRate(const std::vector<Point3> &points, const ClosestPoint &surface, double tolerance) {
   if (points.empty()) return 1;
@@ -18,13 +65,24 @@ double OnSurfaceRate(const std::vector<Point3> &points, const ClosestPoint &surf
   return double(inside) / points.size();
 }
 
-double Coverage(Mesh &target, Mesh &mapped, double tolerance, int samples) {
+double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<UncoveredPart> *uncovered, int samples) {
   std::vector<Point3> points;
   vcg::tri::TrivialSampler<Mesh> sampler(points);
   vcg::tri::SurfaceSampling<Mesh, vcg::tri::TrivialSampler<Mesh>>::SamplingRandomGenerator().initialize(20161121);
   vcg::tri::SurfaceSampling<Mesh, vcg::tri::TrivialSampler<Mesh>>::Montecarlo(target, sampler, samples);
+  if (points.empty()) return 1;
   const ClosestPoint index(mapped);
-  return OnSurfaceRate(points, index, tolerance);
+  std::vector<char> near(points.size());
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(points.size()); ++n) {
+    const ClosestHit hit = index.Query(points[n], 2 * tolerance);
+    near[n] = hit.face != nullptr && hit.distance <= tolerance;
+  }
+  std::vector<Point3> missed;
+  for (std::size_t n = 0; n < points.size(); ++n)
+    if (!near[n]) missed.push_back(points[n]);
+  if (uncovered) *uncovered = GroupPoints(missed, tolerance, points.size());
+  return 1 - double(missed.size()) / points.size();
 }
 
 double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target) {

@@ -13,8 +13,12 @@ namespace eulermap {
 double OnSurfaceRate(const std::vector<Point3> &points, const ClosestPoint &surface, double tolerance);
 
 // Share of `samples` uniform random points on `target` (fixed seed) lying within
-// `tolerance` of the surface `mapped`.
-double Coverage(Mesh &target, Mesh &mapped, double tolerance, int samples = 20000);
+// `tolerance` of the surface `mapped`. `uncovered`, if given, receives the samples that
+// are not, grouped into parts (samples closer than `tolerance` to one another belong to
+// one part), largest first: where on the target the map is missing (a part of the target
+// that the morph grows away from the moving surface, or one thinner than a grid cell).
+double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<UncoveredPart> *uncovered = nullptr,
+                int samples = 20000);
 
 // Area share of the faces of `mapped` whose normal points against the normal of the
 // target face nearest to their centroid.

@@ -46,6 +46,18 @@ std::string Report::ToText() const {
               "anchor error %.2f cells, mean distortion %.3f\n",
               100 * quality.onSurfaceRate, 100 * quality.coverage, 100 * quality.flippedAreaShare,
               quality.longestEdgeCells, quality.anchorErrorCells, quality.meanDistortion);
+  if (!quality.uncoveredParts.empty()) {
+    // The largest parts, each at least 0.1% of the target; the rest counted.
+    o << "uncovered parts of the target (its own frame):";
+    std::size_t shown = 0;
+    for (const UncoveredPart &p : quality.uncoveredParts)
+      if (shown < 5 && p.share >= 0.001)
+        o << Format("%s %.2f%% around (%.4g, %.4g, %.4g), radius %.3g", shown++ ? ";" : "", 100 * p.share,
+                    p.centre.X(), p.centre.Y(), p.centre.Z(), p.radius);
+    const std::size_t rest = quality.uncoveredParts.size() - shown;
+    if (rest > 0) o << Format(shown ? "; %zu smaller" : " %zu, each under 0.1%%", rest);
+    o << "\n";
+  }
   o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target\n",
               100 * quality.flippedBeforeUntangling, untangledVertices);
   if (!texture.empty()) o << Format("texture: %s\n", texture.c_str());

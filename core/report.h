@@ -26,12 +26,21 @@ struct SolverFigures {
   double maxFinalResidual = 0; // largest relative residual at the end of a step
 };
 
+// A part of the target that the mapped surface does not come near: a cluster of the
+// coverage samples left uncovered (MapQuality::coverage; quality.h, Coverage).
+struct UncoveredPart {
+  Point3 centre;      // mean of its samples, in the target's own frame
+  double share = 0;   // its share of all the samples (about its share of the target's area)
+  double radius = 0;  // largest distance of its samples from `centre`
+};
+
 // Quality of the map F: M0 -> M1 (thresholds in DESIGN.md / the tests).
 struct MapQuality {
   double onSurfaceRate = 0;     // share of tracked images within 0.5% of the target's diagonal
                                 // from the target, before the final projection onto it
   double coverage = 0;          // share of uniform target samples within 2% of the diagonal
                                 // from the mapped surface
+  std::vector<UncoveredPart> uncoveredParts;  // where the other samples lie, largest first
   double flippedAreaShare = 0;  // area share of mapped faces facing against the target
   double flippedBeforeUntangling = 0;  // the same, of the map as tracked (before untangle.h)
   double longestEdgeCells = 0;  // longest mapped edge, in grid cells
