@@ -4,27 +4,20 @@
 
 namespace eulermap {
 
-namespace {
-// Nearest point of the grid's box to p.
-Point3 ClampToBox(const Grid &g, const Point3 &p) {
-  const Box3 b = g.Bounds();
-  Point3 q;
-  for (int a = 0; a < 3; ++a) q[a] = std::min(std::max(p[a], b.min[a]), b.max[a]);
-  return q;
-}
-} // namespace
-
 double ScalarField::Value(const Point3 &p) const {
-  const Point3 q = ClampToBox(grid, p);
-  return Sample(q) + vcg::Distance(p, q);
+  int c[3];
+  double w[3];
+  Point3 outside;
+  Locate(p, c, w, &outside);
+  return Interpolate(c, w) + outside.Norm() * grid.h;
 }
 
 Point3 ScalarField::Gradient(const Point3 &p) const {
-  const Point3 q = ClampToBox(grid, p);
-  if (q != p) return (p - q).Normalize();
   int c[3];
   double w[3];
-  Locate(p, c, w);
+  Point3 outside;
+  Locate(p, c, w, &outside);
+  if (outside != Point3(0, 0, 0)) return outside.Normalize();
   Point3 g(0, 0, 0);
   for (int dk = 0; dk < 2; ++dk)
     for (int dj = 0; dj < 2; ++dj)
@@ -39,13 +32,13 @@ Point3 ScalarField::Gradient(const Point3 &p) const {
 }
 
 Point3 ScalarField::NodeGradient(int i, int j, int k) const {
-  const int idx[3] = {i, j, k};
+  const int c[3] = {i, j, k};
+  const std::size_t idx = grid.Index(i, j, k), stride[3] = {1, std::size_t(grid.dims[0]), std::size_t(grid.dims[0]) * grid.dims[1]};
+  const double whole = 1 / grid.h, half = 0.5 * whole;
   Point3 g;
   for (int a = 0; a < 3; ++a) {
-    int lo[3] = {i, j, k}, hi[3] = {i, j, k};
-    lo[a] = std::max(idx[a] - 1, 0);
-    hi[a] = std::min(idx[a] + 1, grid.dims[a] - 1);
-    g[a] = ((*this)(hi[0], hi[1], hi[2]) - (*this)(lo[0], lo[1], lo[2])) / ((hi[a] - lo[a]) * grid.h);
+    const int lo = c[a] > 0, hi = c[a] + 1 < grid.dims[a];  // one-sided at the box faces
+    g[a] = (values[idx + hi * stride[a]] - values[idx - lo * stride[a]]) * (lo && hi ? half : whole);
   }
   return g;
 }

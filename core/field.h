@@ -11,12 +11,6 @@
 
 namespace eulermap {
 
-// Zero of a field's value type. vcg::Point3's default constructor leaves its coordinates
-// uninitialised, so Point3() is not zero (a stack garbage value here made the tracker
-// lose points inside MeshLab, where the stack is not fresh).
-template <class Value> Value Zero() { return Value(0); }
-template <> inline Point3 Zero<Point3>() { return Point3(0, 0, 0); }
-
 template <class Value> struct Field {
   Grid grid;
   std::vector<Value> values;  // one per node, in Grid::Index order
@@ -32,24 +26,32 @@ template <class Value> struct Field {
     int c[3];
     double w[3];
     Locate(p, c, w);
-    Value r = Zero<Value>();
-    for (int dk = 0; dk < 2; ++dk)
-      for (int dj = 0; dj < 2; ++dj)
-        for (int di = 0; di < 2; ++di) {
-          const double weight = (di ? w[0] : 1 - w[0]) * (dj ? w[1] : 1 - w[1]) * (dk ? w[2] : 1 - w[2]);
-          r += (*this)(c[0] + di, c[1] + dj, c[2] + dk) * weight;
-        }
-    return r;
+    return Interpolate(c, w);
   }
 
-  // Cell (lower corner) and local coordinates in [0,1]^3 of the clamped point p.
-  void Locate(const Point3 &p, int cell[3], double local[3]) const {
+  // Cell (lower corner) and local coordinates in [0,1]^3 of the point p clamped onto the
+  // box; outside (when given): p minus that point, in grid units.
+  void Locate(const Point3 &p, int cell[3], double local[3], Point3 *outside = nullptr) const {
     const Point3 g = grid.ToGrid(p);
     for (int a = 0; a < 3; ++a) {
       const double x = std::min(std::max(g[a], 0.0), double(grid.dims[a] - 1));
       cell[a] = std::min(int(x), grid.dims[a] - 2);
       local[a] = x - cell[a];
+      if (outside) (*outside)[a] = g[a] - x;
     }
+  }
+
+  // The trilinear interpolant of cell `cell` at local coordinates w: the corners weighted
+  // by products of (1 - w_a) and w_a, summed axis by axis. No Value is default-constructed:
+  // vcg::Point3() leaves its coordinates unset (a garbage start here once made the tracker
+  // lose points inside MeshLab; test_field).
+  Value Interpolate(const int cell[3], const double w[3]) const {
+    const std::size_t sy = grid.dims.X(), sz = sy * grid.dims.Y();
+    const Value *v = &values[grid.Index(cell[0], cell[1], cell[2])];
+    const double x0 = 1 - w[0], x1 = w[0];
+    const Value y0 = (v[0] * x0 + v[1] * x1) * (1 - w[1]) + (v[sy] * x0 + v[sy + 1] * x1) * w[1];
+    const Value y1 = (v[sz] * x0 + v[sz + 1] * x1) * (1 - w[1]) + (v[sz + sy] * x0 + v[sz + sy + 1] * x1) * w[1];
+    return y0 * (1 - w[2]) + y1 * w[2];
   }
 };
 

@@ -26,28 +26,25 @@
 // on Table 1 row 1, but 28% more time); on the coarsest level (at most kCoarsestNodes nodes
 // or an axis of at most 4 nodes) 20 sweeps, then the same in reverse. The post-smoother is
 // the adjoint of the pre-smoother, so the cycle is a symmetric positive definite operator,
-// as preconditioned conjugate gradients need.
+// as preconditioned conjugate gradients need. Work the cycle can skip, with the same result
+// (up to rounding): the first red sweep starts from x = 0 (no neighbours to read);
+// after the black sweep the residual vanishes at black nodes, so it is computed at red nodes
+// only and the full weighting reads 13 of its 27 fine nodes (the coarse nodes are red, the
+// other 14 black); the post-smoother's black sweep overwrites black nodes without reading
+// them, so the correction is prolonged onto red nodes only. Levels store their values
+// split by colour (red_black.h), so that sweeps run vectorised over contiguous rows.
 #pragma once
 
 #include "field.h"
+#include "red_black.h"
 
 #include <vector>
 
 namespace eulermap {
 
-// A symmetric 3x3 matrix, in single precision (the preconditioner's storage: half the
-// memory traffic of double; the conjugate gradients around it stay in double).
-struct Sym3 {
-  float xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-
-  vcg::Point3f operator*(const vcg::Point3f &v) const {
-    return vcg::Point3f(xx * v[0] + xy * v[1] + xz * v[2], xy * v[0] + yy * v[1] + yz * v[2],
-                        xz * v[0] + yz * v[1] + zz * v[2]);
-  }
-  // The inverse of this + c I (positive definite), computed in double.
-  Sym3 ShiftedInverse(double c) const;
-};
-
+// Blocks D_i and their inverses are symmetric 3x3 matrices, stored as 6 components (xx, xy,
+// xz, yy, yz, zz) in single precision (half the memory traffic of double; the conjugate
+// gradients around the preconditioner stay in double).
 class BlockMultigrid {
  public:
   // in:  the grid (its node counts set the levels), alpha. Allocates every level once;
@@ -55,13 +52,15 @@ class BlockMultigrid {
   BlockMultigrid(const Grid &grid, double alpha);
 
   const vcg::Point3i &Dims() const { return levels_.front().dims; }
-  // D_i per node of the finest grid (Grid::Index order): fill it, then call Update.
-  std::vector<Sym3> &Data() { return levels_.front().data; }
+  // D_i per node of the finest grid, in Layout() (write real nodes only): fill it, then call Update.
+  RedBlackArrays<6> &Data() { return levels_.front().data; }
   // out: the coarse levels' D and every level's block inverses, from Data()
   void Update();
 
-  // out: z = M^-1 r, one V-cycle from z = 0
-  void Precondition(const std::vector<Point3> &r, std::vector<Point3> &z);
+  // in:  r on the finest grid, in Layout() (ghosts 0)
+  // out: z = M^-1 r, one V-cycle from z = 0, in Layout() (ghosts 0)
+  void Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z);
+  const RedBlackLayout &Layout() const { return levels_.front().layout; }
 
   int Levels() const { return int(levels_.size()); }
 
@@ -69,18 +68,23 @@ class BlockMultigrid {
   struct Level {
     vcg::Point3i dims;
     double alpha = 0;
-    std::vector<Sym3> data;     // D_i
-    std::vector<Sym3> inverse;  // (D_i + alpha n_i I)^-1
-    std::vector<vcg::Point3f> x, b, r;
-    std::size_t Index(int i, int j, int k) const { return i + std::size_t(dims[0]) * (j + std::size_t(dims[1]) * k); }
+    RedBlackLayout layout;         // of the arrays below
+    RedBlackArrays<6> data;        // D_i
+    RedBlackArrays<1> shift;       // alpha n_i
+    RedBlackArrays<6> inverse;     // (D_i + alpha n_i I)^-1, (xx, xy, xz, yy, yz, zz)
+    RedBlackArrays<6> diagonal;    // D_i + alpha n_i I (red nodes only: the residual's)
+    RedBlackArrays<3> x, b, r;     // r: red nodes only
+    std::vector<float> gathered[3];  // x in Grid::Index order (coarse levels: the prolongation's)
     std::size_t Count() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   };
 
-  void Sweep(Level &l, int colour);
-  void Residual(Level &l);                    // l.r = l.b - A l.x
-  void Restrict(const Level &fine, const std::vector<vcg::Point3f> &in, Level &coarse, std::vector<vcg::Point3f> &out);
+  // x = (D + alpha n I)^-1 (b + alpha sum_j x_j) at the nodes of colour c (fromZero: every
+  // x_j taken as 0, for the first sweep of a cycle).
+  void Sweep(Level &l, int c, bool fromZero);
+  void Residual(Level &l);                            // l.r = l.b - A l.x at red nodes
+  void Restrict(const Level &fine, Level &coarse);    // coarse.b = R fine.r
   void RestrictData(const Level &fine, Level &coarse);
-  void ProlongAdd(const Level &coarse, Level &fine);  // fine.x += P coarse.x
+  void ProlongAdd(Level &coarse, Level &fine);  // fine.x += P coarse.x at red nodes
   void Cycle(std::size_t level);
 
   std::vector<Level> levels_;

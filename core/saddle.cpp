@@ -76,6 +76,16 @@ Point3 StableDirection(const double J[3][3], int expanding) {
 std::vector<Saddle> FindSaddles(const VectorField &V) {
   const Grid &g = V.grid;
   const vcg::Point3i d = g.dims;
+  // Per node, which signs its components take: bit a when V_a <= 0, bit 3 + a when
+  // V_a >= 0. A trilinear component lies between its corner values, so a cell can hold a
+  // zero only when its corners' bits together are all six.
+  std::vector<unsigned char> signs(V.values.size());
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(signs.size()); ++n) {
+    const Point3 &v = V.values[n];
+    signs[n] = (v[0] <= 0) | (v[1] <= 0) << 1 | (v[2] <= 0) << 2 | (v[0] >= 0) << 3 | (v[1] >= 0) << 4 | (v[2] >= 0) << 5;
+  }
+  const std::size_t sy = d.X(), sz = sy * d.Y();
   std::vector<Saddle> found;
 #pragma omp parallel
   {
@@ -84,16 +94,15 @@ std::vector<Saddle> FindSaddles(const VectorField &V) {
     for (int k = 0; k < d.Z() - 1; ++k)
       for (int j = 0; j < d.Y() - 1; ++j)
         for (int i = 0; i < d.X() - 1; ++i) {
+          const unsigned char *c = &signs[g.Index(i, j, k)];
+          if ((c[0] | c[1] | c[sy] | c[sy + 1] | c[sz] | c[sz + 1] | c[sz + sy] | c[sz + sy + 1]) != 63) continue;
           Cell cell;
-          Point3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
           double scale = 0;
           for (int n = 0; n < 8; ++n) {
             cell.c[n] = V(i + (n & 1), j + ((n >> 1) & 1), k + ((n >> 2) & 1));
-            for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cell.c[n][a]), hi[a] = std::max(hi[a], cell.c[n][a]);
             scale = std::max(scale, cell.c[n].Norm());
           }
-          // A trilinear component lies between its corner values: no sign change, no zero.
-          if (!(scale > 0) || lo[0] > 0 || hi[0] < 0 || lo[1] > 0 || hi[1] < 0 || lo[2] > 0 || hi[2] < 0) continue;
+          if (!(scale > 0)) continue;
           double u[3] = {0.5, 0.5, 0.5}, J[3][3];
           Point3 v = cell.Value(u, J);
           for (int it = 0; it < 5 && v.Norm() > 1e-12 * scale; ++it) {

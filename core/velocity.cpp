@@ -1,186 +1,258 @@
 #include "velocity.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
 namespace eulermap {
 
 namespace {
-// a . b summed over fixed blocks, the blocks' sums added in order: the same bits for any
-// number of threads (an OpenMP reduction adds in an order that depends on it), so maps
-// made with 1 and 2 threads agree (test_end_to_end).
-double Dot(const std::vector<Point3> &a, const std::vector<Point3> &b) {
+// The sum of block(begin, end) over fixed blocks [begin, end) of [0, n), the blocks' sums
+// added in order: the same bits for any number of threads (an OpenMP reduction adds in an
+// order that depends on it), so maps made with 1 and 2 threads agree (test_end_to_end).
+// block may also write the elements of its range (fused passes).
+template <class Block> double BlockSum(long n, Block &&block) {
   constexpr long kBlock = 4096;
-  const long n = long(a.size()), blocks = (n + kBlock - 1) / kBlock;
+  const long blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial(blocks);
 #pragma omp parallel for schedule(static)
-  for (long k = 0; k < blocks; ++k) {
-    double s = 0;
-    for (long m = k * kBlock; m < std::min(n, (k + 1) * kBlock); ++m) s += a[m] * b[m];
-    partial[k] = s;
-  }
+  for (long k = 0; k < blocks; ++k) partial[k] = block(k * kBlock, std::min(n, (k + 1) * kBlock));
   return std::accumulate(partial.begin(), partial.end(), 0.0);
 }
-} // namespace
 
-int VelocitySolver::Neighbours(int i, int j, int k) const {
-  const vcg::Point3i &d = grid_.dims;
-  return (i > 0) + (i + 1 < d.X()) + (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());
+// The 6 arrays (colour c, component a at 3c + a) of system vectors, as pointers.
+template <class Vectors> auto Arrays(Vectors &v) {
+  std::array<decltype(v.c[0][0].data()), 6> p;
+  for (int c = 0; c < 2; ++c)
+    for (int a = 0; a < 3; ++a) p[3 * c + a] = v.c[c][a].data();
+  return p;
 }
+
+double Dot(const RedBlackArrays<3, double> &a, const RedBlackArrays<3, double> &b) {
+  const auto pa = Arrays(a), pb = Arrays(b);
+  return BlockSum(long(a.c[0][0].size()), [&](long begin, long end) {
+    double s = 0;
+    for (int e = 0; e < 6; ++e) {
+      const double *u = pa[e], *v = pb[e];
+#pragma omp simd reduction(+ : s)
+      for (long m = begin; m < end; ++m) s += u[m] * v[m];
+    }
+    return s;
+  });
+}
+} // namespace
 
 VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
                                     const VectorField &prior, const ScalarField &priorWeight) {
   grid_ = fk.grid;
-  const std::size_t n = grid_.NodeCount();
-  if (V.values.size() != n || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
-  g_.resize(n);
-  b_.resize(n);
-  const bool withPrior = !prior.values.empty();
-  beta_ = withPrior ? priorWeight.values : std::vector<double>();
-  // g = grad of (f_k + f_k+1)/2, f_t = (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*)).
+  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
+  if (layout_.dims != grid_.dims) {
+    layout_ = RedBlackLayout(grid_.dims);
+    for (Vectors *v : {&g_, &b_, &x_, &r_, &z_, &p_, &q_}) v->Resize(layout_);
+    shift_.Resize(layout_);
+  }
+  const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
+  if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims)) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
+  // g = grad of (f_k + f_k+1)/2 (central differences, one-sided on the box's faces), f_t =
+  // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*)), shift = alpha n_i + beta_i;
+  // the multigrid's D_i = g g^T + beta_i I; x = V.
   const vcg::Point3i d = grid_.dims;
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < d.Z(); ++k)
-    for (int j = 0; j < d.Y(); ++j)
-      for (int i = 0; i < d.X(); ++i) {
-        const std::size_t idx = grid_.Index(i, j, k);
-        const Point3 g = (fk.NodeGradient(i, j, k) + fk1.NodeGradient(i, j, k)) * 0.5;
-        g_[idx] = g;
-        b_[idx] = g * -((fk1.values[idx] - fk.values[idx]) / dt);
-        if (withPrior) b_[idx] += prior.values[idx] * beta_[idx];
+  const std::size_t sy = d.X(), sz = sy * d.Y();
+  const double whole = 0.5 / grid_.h, half = 0.25 / grid_.h;  // sum = 2 mean: over 2 and 1 cells
+  auto sum = [&](std::size_t n) { return fk.values[n] + fk1.values[n]; };
+  ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
+    const std::size_t yLo = j > 0 ? sy : 0, yHi = j + 1 < d.Y() ? sy : 0, zLo = k > 0 ? sz : 0, zHi = k + 1 < d.Z() ? sz : 0;
+    const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
+    for (int t = 0; t < run.count; ++t) {
+      const int i = run.firstI + 2 * t;
+      const std::size_t idx = row + i, m = run.first + t, xLo = i > 0, xHi = i + 1 < d.X();
+      const Point3 g((sum(idx + xHi) - sum(idx - xLo)) * (xLo && xHi ? half : whole), (sum(idx + yHi) - sum(idx - yLo)) * yScale,
+                     (sum(idx + zHi) - sum(idx - zLo)) * zScale);
+      const double beta = withPrior ? priorWeight.values[idx] : 0;
+      Point3 b = g * -((fk1.values[idx] - fk.values[idx]) / dt);
+      if (withPrior) b += prior.values[idx] * beta;
+      for (int a = 0; a < 3; ++a) g_.c[c][a][m] = g[a], b_.c[c][a][m] = b[a], x_.c[c][a][m] = V.values[idx][a];
+      shift_.c[c][0][m] = alpha_ * layout_.NeighbourCount(i, j, k) + beta;
+      if (multigrid) {
+        const double D[6] = {g[0] * g[0] + beta, g[0] * g[1], g[0] * g[2], g[1] * g[1] + beta, g[1] * g[2], g[2] * g[2] + beta};
+        for (int e = 0; e < 6; ++e) multigrid_->Data().c[c][e][m] = float(D[e]);
       }
+    }
+  });
   const double bNorm = std::sqrt(Dot(b_, b_));
   VelocitySolve s;
-  if (bNorm == 0)  // no motion: V = 0 solves (*) exactly
+  if (bNorm == 0) {  // no motion: V = 0 solves (*) exactly
     std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
-  else if (method_ == Method::GaussSeidel)
-    s = SolveGaussSeidel(V, bNorm);
-  else if (method_ == Method::ConjugateGradient)
-    s = SolveConjugateGradient(V, bNorm, [this](const std::vector<Point3> &r, std::vector<Point3> &z) { BlockJacobi(r, z); });
-  else {
-    if (!multigrid_ || multigrid_->Dims() != grid_.dims) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
-    std::vector<Sym3> &data = multigrid_->Data();  // D_i = g g^T + beta_i I
-#pragma omp parallel for schedule(static)
-    for (long m = 0; m < long(n); ++m) {
-      const Point3 &g = g_[m];
-      const double b = Beta(m);
-      data[m] = {float(g[0] * g[0] + b), float(g[0] * g[1]), float(g[0] * g[2]), float(g[1] * g[1] + b),
-                 float(g[1] * g[2]), float(g[2] * g[2] + b)};
-    }
-    multigrid_->Update();
-    s = SolveConjugateGradient(V, bNorm, [&](const std::vector<Point3> &r, std::vector<Point3> &z) { multigrid_->Precondition(r, z); });
+    return s;
   }
+  if (method_ == Method::GaussSeidel) {
+    s = SolveGaussSeidel(x_, bNorm);
+  } else if (method_ == Method::ConjugateGradient) {
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { BlockJacobi(r, z); });
+  } else {
+    multigrid_->Update();
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { multigrid_->Precondition(r, z); });
+  }
+  ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
+    for (int t = 0; t < run.count; ++t)
+      V.values[row + run.firstI + 2 * t] = Point3(x_.c[c][0][run.first + t], x_.c[c][1][run.first + t], x_.c[c][2][run.first + t]);
+  });
   return s;
 }
 
-void VelocitySolver::Apply(const std::vector<Point3> &x, std::vector<Point3> &out) const {
-  const vcg::Point3i d = grid_.dims;
-  const long sx = 1, sy = d.X(), sz = long(d.X()) * d.Y();
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < d.Z(); ++k)
-    for (int j = 0; j < d.Y(); ++j)
-      for (int i = 0; i < d.X(); ++i) {
-        const long idx = long(grid_.Index(i, j, k));
-        Point3 lap(0, 0, 0);  // sum_j (V_i - V_j)
-        if (i > 0) lap += x[idx] - x[idx - sx];
-        if (i + 1 < d.X()) lap += x[idx] - x[idx + sx];
-        if (j > 0) lap += x[idx] - x[idx - sy];
-        if (j + 1 < d.Y()) lap += x[idx] - x[idx + sy];
-        if (k > 0) lap += x[idx] - x[idx - sz];
-        if (k + 1 < d.Z()) lap += x[idx] - x[idx + sz];
-        const Point3 &g = g_[idx];
-        out[idx] = g * (g * x[idx]) + lap * alpha_ + x[idx] * Beta(idx);
-      }
-}
-
-double VelocitySolver::Residual(const VectorField &V, std::vector<Point3> &r) const {
-  Apply(V.values, r);
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < long(r.size()); ++n) r[n] = b_[n] - r[n];
-  return std::sqrt(Dot(r, r));
-}
-
-void VelocitySolver::BlockJacobi(const std::vector<Point3> &r, std::vector<Point3> &z) const {
-  // (g g^T + c I)^-1 = (I - g g^T / (c + |g|^2)) / c (Sherman-Morrison).
-  const vcg::Point3i d = grid_.dims;
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < d.Z(); ++k)
-    for (int j = 0; j < d.Y(); ++j)
-      for (int i = 0; i < d.X(); ++i) {
-        const std::size_t idx = grid_.Index(i, j, k);
-        const double c = alpha_ * Neighbours(i, j, k) + Beta(idx);
-        const Point3 &g = g_[idx];
-        z[idx] = (r[idx] - g * ((g * r[idx]) / (c + g.SquaredNorm()))) / c;
-      }
-}
-
-VelocitySolve VelocitySolver::SolveConjugateGradient(
-    VectorField &V, double bNorm, const std::function<void(const std::vector<Point3> &, std::vector<Point3> &)> &precondition) {
-  const std::size_t n = grid_.NodeCount();
-  VelocitySolve s;
-  r_.resize(n), z_.resize(n), p_.resize(n), q_.resize(n);
-  std::vector<Point3> &r = r_, &z = z_, &p = p_, &q = q_;
-  double rNorm = Residual(V, r);
-  precondition(r, z);
-  p = z;
-  double rz = Dot(r, z);
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
-    Apply(p, q);
-    const double step = rz / Dot(p, q);
-#pragma omp parallel for schedule(static)
-    for (long m = 0; m < long(n); ++m) {
-      V.values[m] += p[m] * step;
-      r[m] -= q[m] * step;
+double VelocitySolver::Apply(const Vectors &x, Vectors &out) const {
+  const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
+  const double alpha = alpha_;
+  // x . out summed by plane (each plane's runs in order, by one thread), then the planes in
+  // order: the same bits for any number of threads.
+  std::vector<double> plane(layout_.dims[2], 0.0);
+  ForEachRun(layout_, 0, 1, [&](int, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
+    const long w = run.west;
+    const double *v[3], *o[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
+    double *y[3];
+    for (int a = 0; a < 3; ++a)
+      v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, g[a] = g_.c[c][a].data() + run.first,
+      y[a] = out.c[c][a].data() + run.first;
+    // (g g^T + (alpha n_i + beta_i) I) V_i - alpha sum_j V_j, the left-hand side of (*).
+#pragma omp simd
+    for (long m = 0; m < run.count; ++m) {
+      const double gv = g[0][m] * v[0][m] + g[1][m] * v[1][m] + g[2][m] * v[2][m];
+      y[0][m] = g[0][m] * gv + shift[m] * v[0][m] - alpha * NeighbourSum(o[0], m, w, hy, hz);
+      y[1][m] = g[1][m] * gv + shift[m] * v[1][m] - alpha * NeighbourSum(o[1], m, w, hy, hz);
+      y[2][m] = g[2][m] * gv + shift[m] * v[2][m] - alpha * NeighbourSum(o[2], m, w, hy, hz);
     }
-    rNorm = std::sqrt(Dot(r, r));
+    double dot = 0;  // a second pass while the run is in cache: a reduction in the loop above is not vectorised
+#pragma omp simd reduction(+ : dot)
+    for (long m = 0; m < run.count; ++m) dot += v[0][m] * y[0][m] + v[1][m] * y[1][m] + v[2][m] * y[2][m];
+    plane[k] += dot;
+  });
+  return std::accumulate(plane.begin(), plane.end(), 0.0);
+}
+
+double VelocitySolver::Residual(const Vectors &x, Vectors &r) const {
+  Apply(x, r);
+  const auto pb = Arrays(b_);
+  const auto pr = Arrays(r);
+  return std::sqrt(BlockSum(long(layout_.Positions()), [&](long begin, long end) {
+    double s = 0;
+    for (int e = 0; e < 6; ++e) {
+      const double *b = pb[e];
+      double *v = pr[e];
+#pragma omp simd reduction(+ : s)
+      for (long m = begin; m < end; ++m) {
+        v[m] = b[m] - v[m];
+        s += v[m] * v[m];
+      }
+    }
+    return s;
+  }));
+}
+
+void VelocitySolver::BlockJacobi(const Vectors &r, Vectors &z) const {
+  // (g g^T + c I)^-1 = (I - g g^T / (c + |g|^2)) / c (Sherman-Morrison), c = alpha n_i + beta_i.
+  ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
+    const double *v[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
+    double *y[3];
+    for (int a = 0; a < 3; ++a)
+      v[a] = r.c[c][a].data() + run.first, g[a] = g_.c[c][a].data() + run.first, y[a] = z.c[c][a].data() + run.first;
+#pragma omp simd
+    for (long m = 0; m < run.count; ++m) {
+      const double gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+      const double k = (g[0][m] * v[0][m] + g[1][m] * v[1][m] + g[2][m] * v[2][m]) / (shift[m] + gg);
+      y[0][m] = (v[0][m] - g[0][m] * k) / shift[m];
+      y[1][m] = (v[1][m] - g[1][m] * k) / shift[m];
+      y[2][m] = (v[2][m] - g[2][m] * k) / shift[m];
+    }
+  });
+}
+
+VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
+                                                     const std::function<void(const Vectors &, Vectors &)> &precondition) {
+  VelocitySolve s;
+  const long n = long(layout_.Positions());
+  Vectors &r = r_, &z = z_, &p = p_, &q = q_;
+  const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
+  double rNorm = Residual(x, r);
+  precondition(r, z);
+  double rz = BlockSum(n, [&](long begin, long end) {  // p = z, then r . z
+    double t = 0;
+    for (int e = 0; e < 6; ++e) {
+      const double *u = pr[e], *v = pz[e];
+      double *w = pp[e];
+#pragma omp simd reduction(+ : t)
+      for (long m = begin; m < end; ++m) {
+        w[m] = v[m];
+        t += u[m] * v[m];
+      }
+    }
+    return t;
+  });
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+    const double step = rz / Apply(p, q);  // q = A p
+    rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += step p, r -= step q, then |r|^2
+      double t = 0;
+      for (int e = 0; e < 6; ++e) {
+        double *u = px[e], *v = pr[e];
+        const double *dp = pp[e], *dq = pq[e];
+#pragma omp simd reduction(+ : t)
+        for (long m = begin; m < end; ++m) {
+          u[m] += dp[m] * step;
+          v[m] -= dq[m] * step;
+          t += v[m] * v[m];
+        }
+      }
+      return t;
+    }));
     ++s.iterations;
     precondition(r, z);
     const double rzNext = Dot(r, z);
     const double beta = rzNext / rz;
     rz = rzNext;
-#pragma omp parallel for schedule(static)
-    for (long m = 0; m < long(n); ++m) p[m] = z[m] + p[m] * beta;
+#pragma omp parallel
+    for (int e = 0; e < 6; ++e) {  // p = z + beta p
+      double *u = pp[e];
+      const double *v = pz[e];
+#pragma omp for simd schedule(static) nowait
+      for (long m = 0; m < n; ++m) u[m] = v[m] + u[m] * beta;
+    }
   }
   s.residual = rNorm / bNorm;
   return s;
 }
 
-VelocitySolve VelocitySolver::SolveGaussSeidel(VectorField &V, double bNorm) {
-  const std::size_t n = grid_.NodeCount();
+VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm) {
   VelocitySolve s;
-  std::vector<Point3> r(n);
-  const vcg::Point3i d = grid_.dims;
-  const long sx = 1, sy = d.X(), sz = long(d.X()) * d.Y();
-  std::vector<Point3> &x = V.values;
-  double rNorm = Residual(V, r);
+  const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
+  const double alpha = alpha_;
+  double rNorm = Residual(x, r_);
   // Residuals cost as much as a sweep: check every few sweeps.
   const int checkEvery = 10;
   while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
     for (int sweep = 0; sweep < checkEvery && s.iterations < maxIterations_; ++sweep, ++s.iterations)
-      for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(static)
-        for (int k = 0; k < d.Z(); ++k)
-          for (int j = 0; j < d.Y(); ++j)
-            for (int i = (j + k + colour) & 1; i < d.X(); i += 2) {
-              const long idx = long(grid_.Index(i, j, k));
-              Point3 sum(0, 0, 0);
-              int nb = 0;
-              if (i > 0) sum += x[idx - sx], ++nb;
-              if (i + 1 < d.X()) sum += x[idx + sx], ++nb;
-              if (j > 0) sum += x[idx - sy], ++nb;
-              if (j + 1 < d.Y()) sum += x[idx + sy], ++nb;
-              if (k > 0) sum += x[idx - sz], ++nb;
-              if (k + 1 < d.Z()) sum += x[idx + sz], ++nb;
-              // Eq. 5 from (*): V = Vbar - g (g . Vbar + f_t) / (alpha n + |g|^2), with
-              // b = -g f_t, written for a general b: solve (g g^T + c I) V = alpha sum + b.
-              const double c = alpha_ * nb + Beta(idx);
-              const Point3 rhs = sum * alpha_ + b_[idx];
-              const Point3 &g = g_[idx];
-              x[idx] = (rhs - g * ((g * rhs) / (c + g.SquaredNorm()))) / c;
-            }
-      }
-    rNorm = Residual(V, r);
+      for (int colour = 0; colour < 2; ++colour)
+        ForEachRun(layout_, colour, colour, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
+          const long w = run.west;
+          const double *o[3], *b[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
+          double *v[3];
+          for (int a = 0; a < 3; ++a)
+            v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first,
+            g[a] = g_.c[c][a].data() + run.first;
+          // Eq. 5 from (*): V = Vbar - g (g . Vbar + f_t) / (alpha n + |g|^2), with b = -g f_t,
+          // written for a general b: solve (g g^T + c I) V = alpha sum + b, c = alpha n_i + beta_i.
+#pragma omp simd
+          for (long m = 0; m < run.count; ++m) {
+            const double r0 = alpha * NeighbourSum(o[0], m, w, hy, hz) + b[0][m],
+                         r1 = alpha * NeighbourSum(o[1], m, w, hy, hz) + b[1][m],
+                         r2 = alpha * NeighbourSum(o[2], m, w, hy, hz) + b[2][m];
+            const double gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+            const double k = (g[0][m] * r0 + g[1][m] * r1 + g[2][m] * r2) / (shift[m] + gg);
+            v[0][m] = (r0 - g[0][m] * k) / shift[m];
+            v[1][m] = (r1 - g[1][m] * k) / shift[m];
+            v[2][m] = (r2 - g[2][m] * k) / shift[m];
+          }
+        });
+    rNorm = Residual(x, r_);
   }
   s.residual = rNorm / bNorm;
   return s;

@@ -57,30 +57,31 @@ class VelocitySolver {
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
 
  private:
-  // Both need bNorm = ||b|| > 0. precondition(r, z): z = M^-1 r.
-  VelocitySolve SolveConjugateGradient(
-      VectorField &V, double bNorm, const std::function<void(const std::vector<Point3> &, std::vector<Point3> &)> &precondition);
-  VelocitySolve SolveGaussSeidel(VectorField &V, double bNorm);
-  // r = b - A V, returns ||r||.
-  double Residual(const VectorField &V, std::vector<Point3> &r) const;
-  // out = A x (the operator of (*)).
-  void Apply(const std::vector<Point3> &x, std::vector<Point3> &out) const;
-  int Neighbours(int i, int j, int k) const;
+  // Vectors of the system: one Point3 per node, split by colour (red_black.h).
+  using Vectors = RedBlackArrays<3, double>;
+
+  // Both need bNorm = ||b|| > 0; x: the start, then the solution. precondition(r, z): z = M^-1 r.
+  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<void(const Vectors &, Vectors &)> &precondition);
+  VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm);
+  // r = b - A x, returns ||r||.
+  double Residual(const Vectors &x, Vectors &r) const;
+  // out = A x (the operator of (*)); returns x . A x.
+  double Apply(const Vectors &x, Vectors &out) const;
   // z = the exact inverse of each node's block g g^T + (alpha n_i + beta_i) I times r.
-  void BlockJacobi(const std::vector<Point3> &r, std::vector<Point3> &z) const;
-  double Beta(std::size_t idx) const { return beta_.empty() ? 0 : beta_[idx]; }
+  void BlockJacobi(const Vectors &r, Vectors &z) const;
 
   double alpha_;
   Method method_;
   double tolerance_;
   int maxIterations_;
-  // Per-step data of (*): g and b = -g f_t per node.
+  // Per-step data of (*), in layout_: g, b = -g f_t + beta P, and shift = alpha n_i + beta_i per node.
   Grid grid_;
-  std::vector<Point3> g_, b_;
-  std::vector<double> beta_;  // prior weights (empty: none)
-  // Kept from step to step (same grid): the multigrid levels and the CG vectors.
+  RedBlackLayout layout_;
+  Vectors g_, b_;
+  RedBlackArrays<1, double> shift_;
+  // Kept from step to step (same grid): the multigrid levels and the solvers' vectors.
   std::unique_ptr<BlockMultigrid> multigrid_;
-  std::vector<Point3> r_, z_, p_, q_;
+  Vectors x_, r_, z_, p_, q_;
 };
 
 } // namespace eulermap
