@@ -1,5 +1,7 @@
 #include "multigrid.h"
 
+#include "block_sum.h"
+
 #include <algorithm>
 
 namespace eulermap {
@@ -7,6 +9,54 @@ namespace eulermap {
 namespace {
 constexpr std::size_t kCoarsestNodes = 1000;
 constexpr int kCoarsestSweeps = 20;
+
+// Full weighting (R = P^T / 8) of the values from, on the fine layout, onto the coarse one:
+// coarse node (I, J, K) takes w(di) w(dj) w(dk) / 8 of fine node (2I + di, 2J + dj, 2K + dk),
+// w(0) = 1, w(+-1) = 1/2 (kRedOnly: only the 13 red ones, those of even di + dj + dk; from is
+// 0 at black nodes). A tap has colour di + dj + dk (mod 2) and lies at the centre's position
+// plus (di == 1) + dj P_x/2 + dk P_x P_y/2 (red_black.h: the centre's s_x = 2I + 1 is odd),
+// and the centre of I lies at that of I = 0 plus I: each tap is a contiguous run along the
+// coarse row (vectorised, taps unrolled). Ghosts hold 0, so nodes past the box count for nothing.
+template <bool kRedOnly, int N>
+void FullWeighting(const RedBlackLayout &fine, const RedBlackArrays<N> &from, const RedBlackLayout &coarse, RedBlackArrays<N> &to) {
+  constexpr int kTaps = kRedOnly ? 13 : 27, kChunk = kRedOnly ? 13 : 9;  // taps summed in registers per pass
+  int colour[kTaps], taps = 0;
+  long offset[kTaps];
+  float weight[kTaps];
+  for (int dk = -1; dk <= 1; ++dk)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        if (kRedOnly && ((di + dj + dk) & 1)) continue;
+        colour[taps] = (di + dj + dk) & 1;
+        offset[taps] = (di == 1) + dj * fine.RowStride() + dk * fine.PlaneStride();
+        weight[taps++] = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
+      }
+  const int nc = coarse.dims[0];
+#pragma omp parallel if (fine.Nodes() >= kParallelNodes)
+  {
+    std::vector<float> row(nc);
+#pragma omp for schedule(static)
+    for (int K = 0; K < coarse.dims[2]; ++K)
+      for (int J = 0; J < coarse.dims[1]; ++J) {
+        const std::size_t centre = fine.Position(0, 2 * J, 2 * K), first = coarse.Position(0, J, K);
+        for (int e = 0; e < N; ++e) {
+          const float *tap[kTaps];
+          for (int t = 0; t < kTaps; ++t) tap[t] = from.c[colour[t]][e].data() + centre + offset[t];
+          for (int t0 = 0; t0 < kTaps; t0 += kChunk)
+#pragma omp simd
+            for (int I = 0; I < nc; ++I) {
+              float sum = t0 ? row[I] : 0.0f;
+              for (int t = t0; t < t0 + kChunk; ++t) sum += weight[t] * tap[t][I];
+              row[I] = sum;
+            }
+          // Coarse node (I, J, K): colour I + J + K (mod 2), position that of I = 0 plus (I + 1) / 2.
+          float *even = to.c[(J + K) & 1][e].data() + first, *odd = to.c[(J + K + 1) & 1][e].data() + first;
+          for (int I = 0; I < nc; I += 2) even[I / 2] = row[I];
+          for (int I = 1; I < nc; I += 2) odd[(I + 1) / 2] = row[I];
+        }
+      }
+  }
+}
 } // namespace
 
 BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
@@ -40,7 +90,8 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
 }
 
 void BlockMultigrid::Update() {
-  for (std::size_t n = 1; n < levels_.size(); ++n) RestrictData(levels_[n - 1], levels_[n]);
+  for (std::size_t n = 1; n < levels_.size(); ++n)  // coarse D = R D (lumped)
+    FullWeighting<false>(levels_[n - 1].layout, levels_[n - 1].data, levels_[n].layout, levels_[n].data);
   for (Level &l : levels_)
     ForEachRun(l.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
       const float *d[6], *shift = l.shift.c[c][0].data() + run.first;
@@ -64,61 +115,18 @@ void BlockMultigrid::Update() {
     });
 }
 
-void BlockMultigrid::RestrictData(const Level &fine, Level &coarse) {
-  // Full weighting of all 27 fine nodes around fine (2I, 2J, 2K), weight w(di) w(dj) w(dk) / 8,
-  // w(0) = 1, w(+-1) = 1/2: the node (2I + di, ...) has colour di + dj + dk (mod 2) and lies at
-  // position m + (di == 1) + dj P_x/2 + dk P_x P_y/2, m that of the centre (red_black.h: its
-  // s_x is odd). Ghosts hold 0, as nodes past the box count for nothing.
-  const long hy = fine.layout.RowStride(), hz = fine.layout.PlaneStride();
-#pragma omp parallel for schedule(static)
-  for (int K = 0; K < coarse.dims[2]; ++K)
-    for (int J = 0; J < coarse.dims[1]; ++J)
-      for (int I = 0; I < coarse.dims[0]; ++I) {
-        const std::size_t m = fine.layout.Position(2 * I, 2 * J, 2 * K), to = coarse.layout.Position(I, J, K);
-        float sum[6] = {0, 0, 0, 0, 0, 0};
-        for (int dk = -1; dk <= 1; ++dk)
-          for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) {
-              const int colour = (di + dj + dk) & 1;
-              const float weight = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
-              const std::size_t at = m + (di == 1) + dj * hy + dk * hz;
-              for (int e = 0; e < 6; ++e) sum[e] += fine.data.c[colour][e][at] * weight;
-            }
-        const int c = RedBlackLayout::Colour(I, J, K);
-        for (int e = 0; e < 6; ++e) coarse.data.c[c][e][to] = sum[e];
-      }
-}
-
-void BlockMultigrid::Restrict(const Level &fine, Level &coarse) {
-  // Full weighting, coarse node (I, J, K) at fine (2I, 2J, 2K): weight 1/8 there, 1/32 at
-  // the 12 fine nodes two of whose coordinates differ by 1 (red); the 14 others are black,
-  // where the residual is 0. Positions from the centre's m (red_black.h: s_x = 2I + 1 is
-  // odd, so i - 1 lies at m and i + 1 at m + 1).
-  const long hy = fine.layout.RowStride(), hz = fine.layout.PlaneStride();
-#pragma omp parallel for schedule(static)
-  for (int K = 0; K < coarse.dims[2]; ++K)
-    for (int J = 0; J < coarse.dims[1]; ++J)
-      for (int I = 0; I < coarse.dims[0]; ++I) {
-        const std::size_t m = fine.layout.Position(2 * I, 2 * J, 2 * K), to = coarse.layout.Position(I, J, K);
-        const int c = RedBlackLayout::Colour(I, J, K);
-        for (int a = 0; a < 3; ++a) {
-          const float *v = fine.r.c[0][a].data() + m;
-          const float edges = v[-hy - hz] + v[hz - hy] + v[hy - hz] + v[hy + hz] + v[-hy] + v[1 - hy] + v[hy] + v[1 + hy] +
-                              v[-hz] + v[1 - hz] + v[hz] + v[1 + hz];
-          coarse.b.c[c][a][to] = v[0] * 0.125f + edges * 0.03125f;
-        }
-      }
-}
-
 void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
   // The coarse x in Grid::Index order first, so that its rows can be read whole.
   const vcg::Point3i &cd = coarse.dims;
   ForEachRun(coarse.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
-    for (int a = 0; a < 3; ++a)
-      for (int n = 0; n < run.count; ++n) coarse.gathered[a][row + run.firstI + 2 * n] = coarse.x.c[c][a][run.first + n];
+    for (int a = 0; a < 3; ++a) {
+      const float *x = coarse.x.c[c][a].data() + run.first;
+      float *to = coarse.gathered[a].data() + row + run.firstI;
+      for (int n = 0; n < run.count; ++n) to[2 * n] = x[n];
+    }
   });
   const int nc = cd[0];
-#pragma omp parallel
+#pragma omp parallel if (fine.layout.Nodes() >= kParallelNodes)
   {
     std::vector<float> sum(nc);
 #pragma omp for schedule(static)
@@ -202,13 +210,13 @@ void BlockMultigrid::Cycle(std::size_t n) {
   Sweep(l, 0, true), Sweep(l, 1, false);
   Residual(l);
   Level &c = levels_[n + 1];
-  Restrict(l, c);
+  FullWeighting<true>(l.layout, l.r, c.layout, c.b);  // the residual is 0 at black nodes
   Cycle(n + 1);
   ProlongAdd(c, l);
   Sweep(l, 1, false), Sweep(l, 0, false);
 }
 
-void BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z) {
+double BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.layout.Positions());
   for (int c = 0; c < 2; ++c)
@@ -219,13 +227,21 @@ void BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackAr
       for (long m = 0; m < n; ++m) to[m] = float(from[m]);
     }
   Cycle(0);
-  for (int c = 0; c < 2; ++c)
-    for (int a = 0; a < 3; ++a) {
-      const float *from = fine.x.c[c][a].data();
-      double *to = z.c[c][a].data();
-#pragma omp parallel for simd schedule(static)
-      for (long m = 0; m < n; ++m) to[m] = from[m];
-    }
+  return BlockSum(n, [&](long begin, long end) {  // z = x, then r . z
+    double s = 0;
+    for (int c = 0; c < 2; ++c)
+      for (int a = 0; a < 3; ++a) {
+        const float *from = fine.x.c[c][a].data();
+        const double *v = r.c[c][a].data();
+        double *to = z.c[c][a].data();
+#pragma omp simd reduction(+ : s)
+        for (long m = begin; m < end; ++m) {
+          to[m] = from[m];
+          s += v[m] * to[m];
+        }
+      }
+    return s;
+  });
 }
 
 } // namespace eulermap

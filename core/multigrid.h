@@ -58,8 +58,8 @@ class BlockMultigrid {
   void Update();
 
   // in:  r on the finest grid, in Layout() (ghosts 0)
-  // out: z = M^-1 r, one V-cycle from z = 0, in Layout() (ghosts 0)
-  void Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z);
+  // out: z = M^-1 r, one V-cycle from z = 0, in Layout() (ghosts 0); returns r . z (BlockSum)
+  double Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z);
   const RedBlackLayout &Layout() const { return levels_.front().layout; }
 
   int Levels() const { return int(levels_.size()); }
@@ -82,8 +82,6 @@ class BlockMultigrid {
   // x_j taken as 0, for the first sweep of a cycle).
   void Sweep(Level &l, int c, bool fromZero);
   void Residual(Level &l);                            // l.r = l.b - A l.x at red nodes
-  void Restrict(const Level &fine, Level &coarse);    // coarse.b = R fine.r
-  void RestrictData(const Level &fine, Level &coarse);
   void ProlongAdd(Level &coarse, Level &fine);  // fine.x += P coarse.x at red nodes
   void Cycle(std::size_t level);
 

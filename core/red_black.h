@@ -29,6 +29,7 @@ struct RedBlackLayout {
   RedBlackLayout() = default;
   explicit RedBlackLayout(const vcg::Point3i &d) : dims(d), padded((d[0] + 4) & ~1, d[1] + 3, d[2] + 3) {}
 
+  std::size_t Nodes() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }  // real ones
   std::size_t Positions() const { return std::size_t(padded[0]) * padded[1] * padded[2] / 2; }  // per colour
   long RowStride() const { return padded[0] / 2; }
   long PlaneStride() const { return long(padded[0]) * padded[1] / 2; }
@@ -71,12 +72,17 @@ template <int N, class T = float> struct RedBlackArrays {
   }
 };
 
+// Grids of fewer nodes are worked on by one thread: starting and joining the threads costs
+// more than the work (the multigrid's coarse levels; the coarsest one has 40 sweeps a cycle).
+constexpr std::size_t kParallelNodes = 16384;
+
 // Calls fn(j, k, c, run, row) for every run of colour c, firstColour <= c <= lastColour, in
 // real row (j, k); row is the Grid::Index of node (0, j, k): the run's n-th node is
-// i = run.firstI + 2n, at index row + i and at position run.first + n. Planes in parallel.
+// i = run.firstI + 2n, at index row + i and at position run.first + n. Planes in parallel
+// (from kParallelNodes nodes).
 template <class Fn> void ForEachRun(const RedBlackLayout &layout, int firstColour, int lastColour, Fn &&fn) {
   const vcg::Point3i &d = layout.dims;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (layout.Nodes() >= kParallelNodes)
   for (int k = 0; k < d[2]; ++k)
     for (int j = 0; j < d[1]; ++j)
       for (int c = firstColour; c <= lastColour; ++c)

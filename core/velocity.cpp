@@ -1,5 +1,7 @@
 #include "velocity.h"
 
+#include "block_sum.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,19 +10,6 @@
 namespace eulermap {
 
 namespace {
-// The sum of block(begin, end) over fixed blocks [begin, end) of [0, n), the blocks' sums
-// added in order: the same bits for any number of threads (an OpenMP reduction adds in an
-// order that depends on it), so maps made with 1 and 2 threads agree (test_end_to_end).
-// block may also write the elements of its range (fused passes).
-template <class Block> double BlockSum(long n, Block &&block) {
-  constexpr long kBlock = 4096;
-  const long blocks = (n + kBlock - 1) / kBlock;
-  std::vector<double> partial(blocks);
-#pragma omp parallel for schedule(static)
-  for (long k = 0; k < blocks; ++k) partial[k] = block(k * kBlock, std::min(n, (k + 1) * kBlock));
-  return std::accumulate(partial.begin(), partial.end(), 0.0);
-}
-
 // The 6 arrays (colour c, component a at 3c + a) of system vectors, as pointers.
 template <class Vectors> auto Arrays(Vectors &v) {
   std::array<decltype(v.c[0][0].data()), 6> p;
@@ -60,23 +49,34 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const vcg::Point3i d = grid_.dims;
   const std::size_t sy = d.X(), sz = sy * d.Y();
   const double whole = 0.5 / grid_.h, half = 0.25 / grid_.h;  // sum = 2 mean: over 2 and 1 cells
-  auto sum = [&](std::size_t n) { return fk.values[n] + fk1.values[n]; };
+  const double *f0 = fk.values.data(), *f1 = fk1.values.data();
+  const Point3 *v = V.values.data(), *motion = withPrior ? prior.values.data() : nullptr;
+  const double *weight = withPrior ? priorWeight.values.data() : nullptr;
   ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
     const std::size_t yLo = j > 0 ? sy : 0, yHi = j + 1 < d.Y() ? sy : 0, zLo = k > 0 ? sz : 0, zHi = k + 1 < d.Z() ? sz : 0;
     const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
+    const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
+    double *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
+    float *D[6] = {};
+    for (int a = 0; a < 3; ++a)
+      g[a] = g_.c[c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first;
+    if (multigrid)
+      for (int e = 0; e < 6; ++e) D[e] = multigrid_->Data().c[c][e].data() + run.first;
     for (int t = 0; t < run.count; ++t) {
       const int i = run.firstI + 2 * t;
-      const std::size_t idx = row + i, m = run.first + t, xLo = i > 0, xHi = i + 1 < d.X();
-      const Point3 g((sum(idx + xHi) - sum(idx - xLo)) * (xLo && xHi ? half : whole), (sum(idx + yHi) - sum(idx - yLo)) * yScale,
-                     (sum(idx + zHi) - sum(idx - zLo)) * zScale);
-      const double beta = withPrior ? priorWeight.values[idx] : 0;
-      Point3 b = g * -((fk1.values[idx] - fk.values[idx]) / dt);
-      if (withPrior) b += prior.values[idx] * beta;
-      for (int a = 0; a < 3; ++a) g_.c[c][a][m] = g[a], b_.c[c][a][m] = b[a], x_.c[c][a][m] = V.values[idx][a];
-      shift_.c[c][0][m] = alpha_ * layout_.NeighbourCount(i, j, k) + beta;
+      const std::size_t idx = row + i, xLo = i > 0, xHi = i + 1 < d.X();
+      auto sum = [&](std::size_t n) { return f0[n] + f1[n]; };
+      const double gx = (sum(idx + xHi) - sum(idx - xLo)) * (xLo && xHi ? half : whole);
+      const double gy = (sum(idx + yHi) - sum(idx - yLo)) * yScale, gz = (sum(idx + zHi) - sum(idx - zLo)) * zScale;
+      const double beta = withPrior ? weight[idx] : 0, ft = (f1[idx] - f0[idx]) / dt;
+      g[0][t] = gx, g[1][t] = gy, g[2][t] = gz;
+      b[0][t] = -gx * ft, b[1][t] = -gy * ft, b[2][t] = -gz * ft;
+      if (withPrior) b[0][t] += motion[idx][0] * beta, b[1][t] += motion[idx][1] * beta, b[2][t] += motion[idx][2] * beta;
+      x[0][t] = v[idx][0], x[1][t] = v[idx][1], x[2][t] = v[idx][2];
+      shift[t] = alpha_ * int(across + xLo + xHi) + beta;
       if (multigrid) {
-        const double D[6] = {g[0] * g[0] + beta, g[0] * g[1], g[0] * g[2], g[1] * g[1] + beta, g[1] * g[2], g[2] * g[2] + beta};
-        for (int e = 0; e < 6; ++e) multigrid_->Data().c[c][e][m] = float(D[e]);
+        D[0][t] = float(gx * gx + beta), D[1][t] = float(gx * gy), D[2][t] = float(gx * gz);
+        D[3][t] = float(gy * gy + beta), D[4][t] = float(gy * gz), D[5][t] = float(gz * gz + beta);
       }
     }
   });
@@ -89,14 +89,15 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   if (method_ == Method::GaussSeidel) {
     s = SolveGaussSeidel(x_, bNorm);
   } else if (method_ == Method::ConjugateGradient) {
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { BlockJacobi(r, z); });
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); });
   } else {
     multigrid_->Update();
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { multigrid_->Precondition(r, z); });
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); });
   }
+  Point3 *out = V.values.data();
   ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
-    for (int t = 0; t < run.count; ++t)
-      V.values[row + run.firstI + 2 * t] = Point3(x_.c[c][0][run.first + t], x_.c[c][1][run.first + t], x_.c[c][2][run.first + t]);
+    const double *x[3] = {x_.c[c][0].data() + run.first, x_.c[c][1].data() + run.first, x_.c[c][2].data() + run.first};
+    for (int t = 0; t < run.count; ++t) out[row + run.firstI + 2 * t] = Point3(x[0][t], x[1][t], x[2][t]);
   });
   return s;
 }
@@ -149,9 +150,10 @@ double VelocitySolver::Residual(const Vectors &x, Vectors &r) const {
   }));
 }
 
-void VelocitySolver::BlockJacobi(const Vectors &r, Vectors &z) const {
+double VelocitySolver::BlockJacobi(const Vectors &r, Vectors &z) const {
   // (g g^T + c I)^-1 = (I - g g^T / (c + |g|^2)) / c (Sherman-Morrison), c = alpha n_i + beta_i.
-  ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
+  std::vector<double> plane(layout_.dims[2], 0.0);  // r . z by plane, in order (as Apply)
+  ForEachRun(layout_, 0, 1, [&](int, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
     const double *v[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
     double *y[3];
     for (int a = 0; a < 3; ++a)
@@ -164,30 +166,23 @@ void VelocitySolver::BlockJacobi(const Vectors &r, Vectors &z) const {
       y[1][m] = (v[1][m] - g[1][m] * k) / shift[m];
       y[2][m] = (v[2][m] - g[2][m] * k) / shift[m];
     }
+    double dot = 0;
+#pragma omp simd reduction(+ : dot)
+    for (long m = 0; m < run.count; ++m) dot += v[0][m] * y[0][m] + v[1][m] * y[1][m] + v[2][m] * y[2][m];
+    plane[k] += dot;
   });
+  return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 
 VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
-                                                     const std::function<void(const Vectors &, Vectors &)> &precondition) {
+                                                     const std::function<double(const Vectors &, Vectors &)> &precondition) {
   VelocitySolve s;
   const long n = long(layout_.Positions());
   Vectors &r = r_, &z = z_, &p = p_, &q = q_;
   const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
   double rNorm = Residual(x, r);
-  precondition(r, z);
-  double rz = BlockSum(n, [&](long begin, long end) {  // p = z, then r . z
-    double t = 0;
-    for (int e = 0; e < 6; ++e) {
-      const double *u = pr[e], *v = pz[e];
-      double *w = pp[e];
-#pragma omp simd reduction(+ : t)
-      for (long m = begin; m < end; ++m) {
-        w[m] = v[m];
-        t += u[m] * v[m];
-      }
-    }
-    return t;
-  });
+  double rz = precondition(r, z);
+  p = z;
   while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
     const double step = rz / Apply(p, q);  // q = A p
     rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += step p, r -= step q, then |r|^2
@@ -205,8 +200,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
       return t;
     }));
     ++s.iterations;
-    precondition(r, z);
-    const double rzNext = Dot(r, z);
+    const double rzNext = precondition(r, z);
     const double beta = rzNext / rz;
     rz = rzNext;
 #pragma omp parallel

@@ -60,15 +60,16 @@ class VelocitySolver {
   // Vectors of the system: one Point3 per node, split by colour (red_black.h).
   using Vectors = RedBlackArrays<3, double>;
 
-  // Both need bNorm = ||b|| > 0; x: the start, then the solution. precondition(r, z): z = M^-1 r.
-  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<void(const Vectors &, Vectors &)> &precondition);
+  // Both need bNorm = ||b|| > 0; x: the start, then the solution. precondition(r, z): z = M^-1 r,
+  // returns r . z.
+  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition);
   VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm);
   // r = b - A x, returns ||r||.
   double Residual(const Vectors &x, Vectors &r) const;
   // out = A x (the operator of (*)); returns x . A x.
   double Apply(const Vectors &x, Vectors &out) const;
-  // z = the exact inverse of each node's block g g^T + (alpha n_i + beta_i) I times r.
-  void BlockJacobi(const Vectors &r, Vectors &z) const;
+  // z = the exact inverse of each node's block g g^T + (alpha n_i + beta_i) I times r; returns r . z.
+  double BlockJacobi(const Vectors &r, Vectors &z) const;
 
   double alpha_;
   Method method_;
