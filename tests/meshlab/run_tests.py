@@ -274,13 +274,18 @@ def failure_message(log):
     return "(no message from the filter)" + log[-300:]
 
 
+def quick_map(source, target, outdir):
+    """samples/map_meshes.sh on two samples at grid 24, 8 steps; fails the test if it fails."""
+    p = subprocess.run([os.path.join(SAMPLES, "map_meshes.sh"), os.path.join(SAMPLES, source),
+                        os.path.join(SAMPLES, target), outdir, "--grid", "24", "--steps", "8"],
+                       capture_output=True, text=True, timeout=600)
+    check(p.returncode == 0, f"map_meshes.sh failed ({p.returncode}): {p.stderr[-500:]}")
+
+
 def test_map_meshes_script():
     outdir = os.path.join(OUT, "map_meshes")
     shutil.rmtree(outdir, ignore_errors=True)
-    p = subprocess.run([os.path.join(SAMPLES, "map_meshes.sh"), os.path.join(SAMPLES, "torus.ply"),
-                        os.path.join(SAMPLES, "sphere.ply"), outdir, "--grid", "24", "--steps", "8"],
-                       capture_output=True, text=True, timeout=600)
-    check(p.returncode == 0, f"map_meshes.sh failed ({p.returncode}): {p.stderr[-500:]}")
+    quick_map("torus.ply", "sphere.ply", outdir)
     for f in ("cut.ply", "mapped.ply", "report.txt"):
         check(os.path.getsize(os.path.join(outdir, f)) > 0, f"map_meshes.sh wrote no {f}")
     report = open(os.path.join(outdir, "report.txt")).read()
@@ -322,10 +327,7 @@ def test_render_script():
     is a grey checker: no blue). A texture found nowhere is an error."""
     outdir = os.path.join(OUT, "render")
     shutil.rmtree(outdir, ignore_errors=True)
-    p = subprocess.run([os.path.join(SAMPLES, "map_meshes.sh"), os.path.join(SAMPLES, "sphere.ply"),
-                        os.path.join(SAMPLES, "torus.ply"), outdir, "--grid", "24", "--steps", "8"],
-                       capture_output=True, text=True, timeout=600)
-    check(p.returncode == 0, f"map_meshes.sh failed ({p.returncode}): {p.stderr[-500:]}")
+    quick_map("sphere.ply", "torus.ply", outdir)
     cut, mapped, picture = (os.path.join(outdir, f) for f in ("cut.ply", "mapped.ply", "render.png"))
     check("TextureFile torus_checker.png" in meshes.read_mesh(cut).comments, "the cut layer does not name torus_checker.png")
     check(sha256(os.path.join(outdir, "torus_checker.png")) == sha256(os.path.join(SAMPLES, "torus_checker.png")),

@@ -53,6 +53,15 @@ Point3 TargetPosition(Mesh &cut, const Vertex *v) {
   return position[vcg::tri::Index(cut, v)];
 }
 
+// The map of source onto target where they are (no placement), at `cells` cells.
+void MapInPlace(Mesh &source, Mesh &target, int cells, Result &result, bool colourAndQuality = false) {
+  Options options;
+  options.gridResolution = cells;
+  options.align = Align::None;
+  options.transferColour = options.transferQuality = colourAndQuality;
+  ComputeMap(source, target, {}, options, result);
+}
+
 // The analytic torus, with both kinds of texture coordinates the target may carry.
 class PulledTorusTexCoords : public ::testing::TestWithParam<TexCoordKind> {};
 
@@ -64,10 +73,7 @@ TEST_P(PulledTorusTexCoords, EqualTheAnglesOfTheImagesAndNoFaceSpansTwoCharts) {
   MakeTorus(target, Point3(0, 0, 0), R, 0.4, 64, 32, GetParam());
   ASSERT_EQ(DetectTexCoords(target), GetParam());
   Result result;
-  Options options;
-  options.gridResolution = 48;
-  options.align = Align::None;
-  ComputeMap(source, target, {}, options, result);
+  MapInPlace(source, target, 48, result);
   const Report &rep = result.report;
   std::printf("%s", rep.ToText().c_str());
   ASSERT_TRUE(rep.texCoordsPulled);
@@ -126,10 +132,7 @@ TEST(Transfer, MappedKeepsTheSourceTextureAndCutTakesTheTargets) {
   MakeTorus(target, Point3(0, 0, 0), 1.0, 0.4);
   target.textures = {"torus.png"};
   Result result;
-  Options options;
-  options.gridResolution = 48;
-  options.align = Align::None;
-  ComputeMap(source, target, {}, options, result);
+  MapInPlace(source, target, 48, result);
   ASSERT_TRUE(result.report.texCoordsPulled);
   EXPECT_EQ(result.mapped.textures, std::vector<std::string>({"source.png"}));
   EXPECT_EQ(result.cut.textures, std::vector<std::string>({"torus.png"}));
@@ -149,10 +152,7 @@ TEST(Transfer, TargetWithoutTexCoordsLeavesTheSourcesOwn) {
   MakeEllipsoid(target, Point3(0.2, 0, 0), Point3(1.5, 0.7, 0.9), 4);
   ASSERT_EQ(DetectTexCoords(target), TexCoordKind::None);
   Result result;
-  Options options;
-  options.gridResolution = 32;
-  options.align = Align::None;
-  ComputeMap(source, target, {}, options, result);
+  MapInPlace(source, target, 32, result);
   EXPECT_FALSE(result.report.texCoordsPulled);
   EXPECT_NE(result.report.ToText().find("texture: none pulled (the target has no texture coordinates)"),
             std::string::npos);
@@ -177,11 +177,7 @@ TEST(Transfer, ColourAndQualityFollowTheMap) {
     v.Q() = quality(v.cP());
   }
   Result result;
-  Options options;
-  options.gridResolution = 48;
-  options.align = Align::None;
-  options.transferColour = options.transferQuality = true;
-  ComputeMap(source, target, {}, options, result);
+  MapInPlace(source, target, 48, result, true);
   Mesh &cut = result.cut;
   double colourError = 0, qualityError = 0;
   for (const Vertex &v : cut.vert) {
