@@ -9,7 +9,8 @@ double ScalarField::Value(const Point3 &p) const {
   double w[3];
   Point3 outside;
   Locate(p, c, w, &outside);
-  return Interpolate(c, w) + outside.Norm() * grid.h;
+  const double inside = Interpolate(c, w);
+  return outside == Point3(0, 0, 0) ? inside : inside + outside.Norm() * grid.h;
 }
 
 Point3 ScalarField::Gradient(const Point3 &p) const {

@@ -129,16 +129,32 @@ struct WarpPair {
   }
 
   // acc[c count + m] += sum_i phi(|y_m - q_i|) w_i(first + c), c < kColumns, y_m =
-  // (x[m], y0.y, y0.z): per node q_i, one pass over the row.
+  // (x[m], y0.y, y0.z): one pass over the row per kGroup nodes q_i (fewer loads and stores of
+  // acc per node than one pass each), then one per node left over.
   template <int kColumns> void Accumulate(int first, const double *x, const Vec3 &y0, int count, double *acc) const {
-    for (Eigen::Index i = 0; i < nodes.rows(); ++i) {
-      const double qx = nodes(i, 0), cy = y0.y() - nodes(i, 1), cz = y0.z() - nodes(i, 2), c2 = cy * cy + cz * cz;
-      double w[kColumns];
-      for (int c = 0; c < kColumns; ++c) w[c] = weights(i, first + c);
+    constexpr int kGroup = 5;
+    Eigen::Index i = 0;
+    for (; i + kGroup <= nodes.rows(); i += kGroup) AccumulateGroup<kColumns, kGroup>(i, first, x, y0, count, acc);
+    for (; i < nodes.rows(); ++i) AccumulateGroup<kColumns, 1>(i, first, x, y0, count, acc);
+  }
+
+  // The nodes q_i .. q_i+kNodes-1 of Accumulate, in one pass over the row.
+  template <int kColumns, int kNodes>
+  void AccumulateGroup(Eigen::Index i, int first, const double *x, const Vec3 &y0, int count, double *acc) const {
+    double qx[kNodes], c2[kNodes], w[kNodes][kColumns];
+    for (int n = 0; n < kNodes; ++n) {
+      const double cy = y0.y() - nodes(i + n, 1), cz = y0.z() - nodes(i + n, 2);
+      qx[n] = nodes(i + n, 0), c2[n] = cy * cy + cz * cz;
+      for (int c = 0; c < kColumns; ++c) w[n][c] = weights(i + n, first + c);
+    }
 #pragma omp simd
-      for (int m = 0; m < count; ++m) {
-        const double r = std::sqrt((x[m] - qx) * (x[m] - qx) + c2);
-        for (int c = 0; c < kColumns; ++c) acc[c * count + m] += r * w[c];
+    for (int m = 0; m < count; ++m) {
+      double r[kNodes];
+      for (int n = 0; n < kNodes; ++n) r[n] = std::sqrt((x[m] - qx[n]) * (x[m] - qx[n]) + c2[n]);
+      for (int c = 0; c < kColumns; ++c) {
+        double sum = acc[c * count + m];
+        for (int n = 0; n < kNodes; ++n) sum += r[n] * w[n][c];
+        acc[c * count + m] = sum;
       }
     }
   }

@@ -219,13 +219,13 @@ void BlockMultigrid::Cycle(std::size_t n) {
 double BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.layout.Positions());
-  for (int c = 0; c < 2; ++c)
-    for (int a = 0; a < 3; ++a) {
-      const double *from = r.c[c][a].data();
-      float *to = fine.b.c[c][a].data();
-#pragma omp parallel for simd schedule(static)
-      for (long m = 0; m < n; ++m) to[m] = float(from[m]);
-    }
+#pragma omp parallel
+  for (int e = 0; e < 6; ++e) {  // b = r, component e % 3 of colour e / 3
+    const double *from = r.c[e / 3][e % 3].data();
+    float *to = fine.b.c[e / 3][e % 3].data();
+#pragma omp for simd schedule(static) nowait
+    for (long m = 0; m < n; ++m) to[m] = float(from[m]);
+  }
   Cycle(0);
   return BlockSum(n, [&](long begin, long end) {  // z = x, then r . z
     double s = 0;

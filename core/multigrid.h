@@ -52,15 +52,16 @@ class BlockMultigrid {
   BlockMultigrid(const Grid &grid, double alpha);
 
   const vcg::Point3i &Dims() const { return levels_.front().dims; }
-  // D_i per node of the finest grid, in Layout() (write real nodes only): fill it, then call Update.
+  // D_i per node of the finest grid, in RedBlackLayout(Dims()) (write real nodes only): fill
+  // it, then call Update.
   RedBlackArrays<6> &Data() { return levels_.front().data; }
   // out: the coarse levels' D and every level's block inverses, from Data()
   void Update();
 
-  // in:  r on the finest grid, in Layout() (ghosts 0)
-  // out: z = M^-1 r, one V-cycle from z = 0, in Layout() (ghosts 0); returns r . z (BlockSum)
+  // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
+  // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0); returns r . z
+  //      (block_sum.h: the same bits for any number of threads)
   double Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z);
-  const RedBlackLayout &Layout() const { return levels_.front().layout; }
 
   int Levels() const { return int(levels_.size()); }
 
