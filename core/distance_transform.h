@@ -25,7 +25,10 @@
 namespace eulermap {
 
 // in:  mesh (live faces; none: all distances 0), grid
-// out: per node, the distance to the nearest point of the mesh
-ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid);
+// out: per node, the distance to the nearest point of the mesh; gradient (when given): per
+//      node, the gradient of that distance, the unit vector from the nearest point (of the
+//      face found) to the node; on the surface, that face's unit normal (the mesh's
+//      orientation)
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr);
 
 } // namespace eulermap

@@ -2,6 +2,7 @@
 
 #include "closest.h"
 #include "grid.h"
+#include "hermite_field.h"
 #include "morph.h"
 #include "quality.h"
 #include "sdf.h"
@@ -126,12 +127,13 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
   // fields are made side by side.
   ScalarField f0, f1;
+  VectorField gradient0, gradient1;  // for HermiteFields (hermite_field.h): samples' levels, last pull-back
 #pragma omp parallel sections
   {
 #pragma omp section
-    f0 = SignedDistance(source, grid);
+    f0 = SignedDistance(source, grid, samples.empty() ? nullptr : &gradient0);
 #pragma omp section
-    f1 = SignedDistance(placed, grid);
+    f1 = SignedDistance(placed, grid, &gradient1);
   }
   rep.times.sdf = Seconds(t0);
 
@@ -149,7 +151,15 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   for (const Vertex &v : source.vert) points.push_back(v.cP());
   points.insert(points.end(), a.begin(), a.end());
   points.insert(points.end(), samples.begin(), samples.end());
-  Tracker tracker(std::move(points), fCur);
+  // Levels (tracker.h): the vertices and the anchors lie on the source, so on f = 0; a
+  // sample follows the level of f0 where it starts (0 up to the field's error on the surface).
+  std::vector<double> levels(points.size(), 0.0);
+  if (!samples.empty()) {
+    const HermiteField start(f0, gradient0);
+    for (std::size_t n = points.size() - samples.size(); n < points.size(); ++n) levels[n] = start.Value(points[n]);
+  }
+  gradient0 = VectorField();
+  Tracker tracker(std::move(points), std::move(levels));
   Surgery surgery(source, options.holeRadius * grid.h, grid.h);  // surgery.h
 
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
@@ -177,6 +187,11 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
     rep.times.deform += Seconds(t0);
     std::swap(fCur, fNext);
   }
+  t0 = Clock::now();
+  const HermiteField targetField(f1, gradient1);
+  tracker.Settle(targetField);
+  surgery.Settle(targetField);
+  rep.times.deform += Seconds(t0);
 
   // Images on the placed target: measure, then project onto the target mesh itself.
   report(0.9, "measuring the map");

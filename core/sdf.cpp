@@ -391,13 +391,16 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
 // in:  mesh — triangle mesh, closed or with holes; grid — the lattice
 // out: f(node) = +/- distance to the nearest surface point (distance_transform.h),
 //      negative where the generalized winding number is >= 1/2 (DESIGN.md: sdf.h).
-ScalarField SignedDistance(const Mesh &mesh, const Grid &grid) {
-  ScalarField f = UnsignedDistance(mesh, grid);
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient) {
+  ScalarField f = UnsignedDistance(mesh, grid, gradient);
   const WindingNumber winding(mesh);
   const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh));
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(f.values.size()); ++n)
-    if (inside[n]) f.values[n] = -f.values[n];
+    if (inside[n]) {
+      f.values[n] = -f.values[n];
+      if (gradient && f.values[n] < 0) gradient->values[n] = -gradient->values[n];  // not on the surface: the normal
+    }
   return f;
 }
 

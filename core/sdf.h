@@ -38,6 +38,8 @@ class WindingNumber {
   std::unique_ptr<Tree> tree_;
 };
 
-ScalarField SignedDistance(const Mesh &mesh, const Grid &grid);
+// gradient (when given): per node, the gradient of the signed distance (the unsigned
+// one's, distance_transform.h, turned round inside), for HermiteField (hermite_field.h).
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr);
 
 } // namespace eulermap

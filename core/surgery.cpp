@@ -186,6 +186,10 @@ void Surgery::Step(int k, const VectorField &V, const ScalarField &fNext, double
   Refine(position, fNext);
 }
 
+void Surgery::Settle(const HermiteField &f1) {
+  for (Tracker &batch : batches_) batch.Settle(f1);
+}
+
 std::vector<int> Surgery::StableCrossing(const Saddle &saddle, const std::vector<Point3> &position) const {
   const Point3 &o = saddle.position, &d = saddle.stable;
   const double reach = kReachCells * cell_ + radius_;
@@ -435,7 +439,10 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext) {
       }
     }
   }
-  if (!born.empty()) batches_.emplace_back(std::move(born), fNext);
+  if (!born.empty()) {
+    std::vector<double> onSurface(born.size(), 0.0);  // born on f = 0
+    batches_.emplace_back(std::move(born), std::move(onSurface));
+  }
 }
 
 std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &tracked, Mesh &cut,

@@ -66,6 +66,9 @@ class Surgery {
   // out: events followed, faces cut, the surface cleaned and refined (steps 1-4 above)
   void Step(int k, const VectorField &V, const ScalarField &fNext, double dt, const std::vector<Point3> &tracked);
 
+  // After the last step: the added points' last pull-back (Tracker::Settle).
+  void Settle(const HermiteField &f1);
+
   // Every saddle event: step and position where it first cut (where it was first seen if
   // it never cut), kind, whether it cut.
   const std::vector<SaddleEvent> &Saddles() const { return saddles_.Events(); }

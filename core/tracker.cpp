@@ -4,12 +4,13 @@
 
 namespace eulermap {
 
-Tracker::Tracker(std::vector<Point3> points, const ScalarField &f0) : points_(std::move(points)), levels_(points_.size()) {
-  for (std::size_t n = 0; n < points_.size(); ++n) levels_[n] = f0.Value(points_[n]);
-}
+Tracker::Tracker(std::vector<Point3> points, std::vector<double> levels)
+    : points_(std::move(points)), levels_(std::move(levels)) {}
 
-Point3 PullBack(const ScalarField &f, Point3 p, double level) {
-  const double h = f.grid.h;
+namespace {
+
+// The pull-back of tracker.h on any field with Value and Gradient; h: its grid cell.
+template <class Field> Point3 PullBackOn(const Field &f, double h, Point3 p, double level) {
   for (int it = 0; it < 8; ++it) {
     const double e = f.Value(p) - level;
     if (std::abs(e) < 1e-4 * h) break;
@@ -24,6 +25,11 @@ Point3 PullBack(const ScalarField &f, Point3 p, double level) {
   return p;
 }
 
+} // namespace
+
+Point3 PullBack(const ScalarField &f, Point3 p, double level) { return PullBackOn(f, f.grid.h, p, level); }
+Point3 PullBack(const HermiteField &f, Point3 p, double level) { return PullBackOn(f, f.grid().h, p, level); }
+
 void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt) {
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(points_.size()); ++n) {
@@ -31,6 +37,11 @@ void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt)
     const Point3 mid = p + V.Sample(p) * (dt / 2);  // Eq. 7, midpoint rule
     p = PullBack(fNext, p + V.Sample(mid) * dt, levels_[n]);
   }
+}
+
+void Tracker::Settle(const HermiteField &f1) {
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < long(points_.size()); ++n) points_[n] = PullBack(f1, points_[n], levels_[n]);
 }
 
 } // namespace eulermap
