@@ -21,8 +21,11 @@
 // target vertices pulled onto the zero set are within it at 87.1% (bunny, 30x40x30) and
 // 92.6% (camelhead, 40x30x40) with trilinear interpolation, 96.6% / 96.2% with Catmull-Rom
 // tricubic interpolation of the values alone, and 99.5% / 99.5% with this field.
-// Used at the two ends of the map only: the tracked points' levels on f0 and their last
-// pull-back onto f1 (tracker.h); the frames in between need no more than trilinear.
+// Used at the two ends of the map only: the levels of samples off the source (f0) and every
+// tracked point's last pull-back onto f1 (tracker.h). Reading each frame in between this way
+// would replace the pull-back's 8 node reads by 8 corners of 8 derivatives each (4 of them
+// differenced from neighbours' gradients), and would need each frame's node gradients
+// through the warps' Jacobians (morph.h).
 #pragma once
 
 #include "field.h"

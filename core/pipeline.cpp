@@ -209,8 +209,13 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(images.size()); ++n) hits[n] = placedIndex.Query(images[n]);
   for (std::size_t n = 0; n < a.size(); ++n) {
-    const double e = vcg::Distance(placedIndex.Query(tracked[source.vert.size() + n]).point, bPlaced[n]) / grid.h;
-    rep.quality.anchorErrorCells = std::max(rep.quality.anchorErrorCells, e);
+    AnchorFigure figure;
+    figure.name = anchors[n].name;
+    figure.error = vcg::Distance(placedIndex.Query(tracked[source.vert.size() + n]).point, bPlaced[n]) / grid.h;
+    figure.sourceLevel = f0.Value(a[n]) / grid.h;
+    figure.targetLevel = f1.Value(bPlaced[n]) / grid.h;
+    rep.quality.anchorErrorCells = std::max(rep.quality.anchorErrorCells, figure.error);
+    rep.quality.anchorFigures.push_back(figure);
   }
 
   // Outputs: cut (source with TargetPosition), mapped (vertices at their images).

@@ -1,5 +1,6 @@
 #include "report.h"
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <sstream>
@@ -17,6 +18,13 @@ std::string Format(const char *fmt, ...) {
   return buffer;
 }
 } // namespace
+
+double MapQuality::ResolvedAnchorErrorCells() const {
+  double worst = 0;
+  for (const AnchorFigure &a : anchorFigures)
+    if (a.Resolved()) worst = std::max(worst, a.error);
+  return worst;
+}
 
 std::string Report::ToText() const {
   std::ostringstream o;
@@ -46,6 +54,22 @@ std::string Report::ToText() const {
               "anchor error %.2f cells, mean distortion %.3f\n",
               100 * quality.onSurfaceRate, 100 * quality.coverage, 100 * quality.flippedAreaShare,
               quality.longestEdgeCells, quality.anchorErrorCells, quality.meanDistortion);
+  if (!quality.anchorFigures.empty()) {
+    o << "anchors (error in cells; f0 at a, f1 at b in cells):";
+    std::string far;  // anchors more than a cell off, at a tip the grid cuts short
+    for (std::size_t n = 0; n < quality.anchorFigures.size(); ++n) {
+      const AnchorFigure &a = quality.anchorFigures[n];
+      o << Format("%s %s %.2f (%.2f, %.2f)", n ? ";" : "", a.name.c_str(), a.error, a.sourceLevel, a.targetLevel);
+      if (a.error > 1 && !a.Resolved()) far += (far.empty() ? "" : ", ") + a.name;
+    }
+    o << "\n";
+    if (!far.empty())
+      o << Format("note: anchors %s end more than a cell from their partners; they lie on tips the grid cuts short "
+                  "(f0 at a or f1 at b above %.2f cells), and an image ends where the cut tip ends. The cut is about as "
+                  "many cells deep at any grid, so a finer grid shortens it only in proportion; an anchor moved off "
+                  "the tip avoids it. Largest error over the anchors the grid resolves: %.2f cells\n",
+                  far.c_str(), AnchorFigure::kResolvedLevel, quality.ResolvedAnchorErrorCells());
+  }
   if (!quality.uncoveredParts.empty()) {
     // The largest parts, each at least 0.1% of the target; the rest counted.
     o << "uncovered parts of the target (its own frame):";

@@ -5,6 +5,7 @@
 
 #include "mesh.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,21 @@ struct UncoveredPart {
   double radius = 0;  // largest distance of its samples from `centre`
 };
 
+// One anchor pair's figures, in grid cells. The levels tell whether the grid resolves the
+// anchor's points: at a sharp tip its zero level set (trilinear) passes inside the tip, and
+// the point lies off it, outside. Such a tip is cut short by about the same number of cells
+// at any grid, and the image of a_i ends where the cut tip ends: on the Table 1 rows, the
+// anchors with both levels within kResolvedLevel end within 0.4 cells of b_i; those at tips
+// (levels 0.18-0.6) up to 3.3 cells away. The report names those more than a cell off.
+struct AnchorFigure {
+  static constexpr double kResolvedLevel = 0.15;
+  std::string name;
+  double error = 0;        // |F(a_i) - b_i|
+  double sourceLevel = 0;  // f0(a_i), trilinear
+  double targetLevel = 0;  // f1(b_i) (b_i placed), trilinear
+  bool Resolved() const { return std::abs(sourceLevel) <= kResolvedLevel && std::abs(targetLevel) <= kResolvedLevel; }
+};
+
 // Quality of the map F: M0 -> M1 (thresholds in DESIGN.md / the tests).
 struct MapQuality {
   double onSurfaceRate = 0;     // share of tracked images within 0.5% of the target's diagonal
@@ -45,6 +61,9 @@ struct MapQuality {
   double flippedBeforeUntangling = 0;  // the same, of the map as tracked (before untangle.h)
   double longestEdgeCells = 0;  // longest mapped edge, in grid cells
   double anchorErrorCells = 0;  // largest |F(a_i) - b_i|, in grid cells (0 without anchors)
+  std::vector<AnchorFigure> anchorFigures;  // per anchor pair, in order
+  // The largest error over the anchors the grid resolves (AnchorFigure::Resolved); 0 if none.
+  double ResolvedAnchorErrorCells() const;
   double meanDistortion = 0;    // mean per-vertex distortion (vertex quality of the cut layer)
 };
 

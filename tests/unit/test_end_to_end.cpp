@@ -76,6 +76,16 @@ TEST(EndToEnd, SpotToCowWithAnchors) {
   // reaches, even on a 128-cell grid (98.3% coverage, 304 of the 350 uncovered samples on
   // the tail); the report names it as the largest uncovered part (1.35% of the cow).
   ExpectGoodMap(result.report, true);
+  // Per anchor: its own figures, the largest of which is the report's anchor error.
+  const std::vector<AnchorFigure> &figures = result.report.quality.anchorFigures;
+  ASSERT_EQ(figures.size(), anchors.size());
+  double worst = 0;
+  for (std::size_t n = 0; n < figures.size(); ++n) {
+    EXPECT_EQ(figures[n].name, anchors[n].name);
+    EXPECT_LT(std::abs(figures[n].targetLevel), 0.5) << figures[n].name;  // spot's and the cow's points lie on the grid's surfaces
+    worst = std::max(worst, figures[n].error);
+  }
+  EXPECT_EQ(worst, result.report.quality.anchorErrorCells);
 }
 
 // The coverage samples that the mapped surface leaves are reported as parts: a target of
