@@ -57,18 +57,21 @@ std::string Report::ToText() const {
   if (!quality.anchorFigures.empty()) {
     o << "anchors (error in cells; f0 at a, f1 at b in cells):";
     std::string far;  // anchors more than a cell off, at a tip the grid cuts short
+    int count = 0;
     for (std::size_t n = 0; n < quality.anchorFigures.size(); ++n) {
       const AnchorFigure &a = quality.anchorFigures[n];
       o << Format("%s %s %.2f (%.2f, %.2f)", n ? ";" : "", a.name.c_str(), a.error, a.sourceLevel, a.targetLevel);
-      if (a.error > 1 && !a.Resolved()) far += (far.empty() ? "" : ", ") + a.name;
+      if (a.error > 1 && !a.Resolved()) far += (count++ ? ", " : "") + a.name;
     }
     o << "\n";
-    if (!far.empty())
-      o << Format("note: anchors %s end more than a cell from their partners; they lie on tips the grid cuts short "
-                  "(f0 at a or f1 at b above %.2f cells), and an image ends where the cut tip ends. The cut is about as "
-                  "many cells deep at any grid, so a finer grid shortens it only in proportion; an anchor moved off "
-                  "the tip avoids it. Largest error over the anchors the grid resolves: %.2f cells\n",
-                  far.c_str(), AnchorFigure::kResolvedLevel, quality.ResolvedAnchorErrorCells());
+    if (count > 0)
+      o << Format("note: %s %s %s more than a cell from %s; %s on %s the grid cuts short (f0 at a or f1 at b above "
+                  "%.2f cells), and an image ends where the cut tip ends. The cut is about as many cells deep at any "
+                  "grid, so a finer grid shortens it only in proportion; an anchor moved off the tip avoids it. "
+                  "Largest error over the anchors the grid resolves: %.2f cells\n",
+                  count == 1 ? "anchor" : "anchors", far.c_str(), count == 1 ? "ends" : "end",
+                  count == 1 ? "its partner" : "their partners", count == 1 ? "it lies" : "they lie",
+                  count == 1 ? "a tip" : "tips", AnchorFigure::kResolvedLevel, quality.ResolvedAnchorErrorCells());
   }
   if (!quality.uncoveredParts.empty()) {
     // The largest parts, each at least 0.1% of the target; the rest counted.

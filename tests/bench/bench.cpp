@@ -12,9 +12,6 @@
 // `row` and `grid` print one line of the table (`|`-separated); `map` prints the report.
 #include "tests/support/meshes.h"
 
-#include <vcg/complex/algorithms/refine.h>
-#include <vcg/complex/algorithms/update/topology.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -30,14 +27,14 @@ struct Row {
   int refinements;   // midpoint subdivisions of every edge, to reach the paper's vertex count
   vcg::Point3i nodes;
   int anchors;
-  double deformation;  // strength of Deform for the target
+  double deformation;  // strength of Bend for the target
   // Paper, Table 1: vertices and seconds for INT, VF, DEF.
   int paperVertices;
   double paperInt, paperVf, paperDef;
 };
 
 // Row 2 has no anchors, so its morph is the linear blend of f0 and f1 (Eq. 1), which carries
-// a part only where source and target overlap. At full strength Deform moves the bunny's
+// a part only where source and target overlap. At full strength Bend moves the bunny's
 // ears by more than their thickness: the blend dissolves them and grows the target's out of
 // nothing, which no point reaches (coverage 88-90% at 30x40x30 and 88.8% at 60x80x60).
 // Row 2 uses half the deformation; `--deformation 1` shows the full one.
@@ -47,39 +44,6 @@ const Row kRows[4] = {
     {"decimated-knight.off", 2, {100, 80, 50}, 30, 1, 8078, 85, 324, 10},
     {"camelhead.off", 1, {40, 30, 40}, 21, 1, 44170, 8, 34, 56},
 };
-
-// A smooth non-rigid deformation: stretch, bend and turn (the target of a row); strength 0
-// is the identity.
-Point3 Deform(const Point3 &p, const Box3 &box, double strength) {
-  const Point3 q = (p - box.Center()) / box.Diag();
-  const double s = strength;
-  const Point3 bent((1 + 0.3 * s) * q.X(), (1 - 0.2 * s) * q.Y() + 0.6 * s * q.X() * q.X(), q.Z() + 0.3 * s * q.Y() * q.X());
-  const double cos = std::cos(0.4 * s), sin = std::sin(0.4 * s);
-  return Point3(cos * bent.X() - sin * bent.Z(), bent.Y(), sin * bent.X() + cos * bent.Z()) * box.Diag();
-}
-
-// Anchors: farthest-point samples among the source's vertices, and their deformed images.
-std::vector<AnchorPair> SampleAnchors(const Mesh &source, const Mesh &target, int count) {
-  std::vector<AnchorPair> anchors;
-  if (count == 0) return anchors;
-  std::vector<double> distance(source.vert.size(), 1e300);
-  std::size_t next = 0;
-  for (int a = 0; a < count; ++a) {
-    anchors.push_back({source.vert[next].cP(), target.vert[next].cP(), "a" + std::to_string(a)});
-    for (std::size_t v = 0; v < source.vert.size(); ++v)
-      distance[v] = std::min(distance[v], vcg::Distance(source.vert[v].cP(), source.vert[next].cP()));
-    next = std::max_element(distance.begin(), distance.end()) - distance.begin();
-  }
-  return anchors;
-}
-
-void Refine(Mesh &m, int times) {
-  for (int r = 0; r < times; ++r) {
-    vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
-    vcg::tri::Refine<Mesh, vcg::tri::MidPoint<Mesh>>(m, vcg::tri::MidPoint<Mesh>(&m), 0);
-  }
-  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
-}
 
 // The speed-ups: the paper's INT+VF+DEF over ours with our SDF included (the paper's table
 // has no SDF column), and over our INT+VF+DEF alone (like for like).
@@ -144,12 +108,12 @@ int main(int argc, char **argv) {
     if (mode == "row") {
       const Row &row = kRows[std::atoi(argv[2]) - 1];
       LoadMesh(DataMesh(row.mesh), source);
-      Refine(source, row.refinements);
+      RefineMidpoint(source, row.refinements);
       LoadMesh(DataMesh(row.mesh), target);
-      Refine(target, row.refinements);
+      RefineMidpoint(target, row.refinements);
       const double strength = FlagValue(argc, argv, "--deformation", row.deformation);
-      for (Vertex &v : target.vert) v.P() = Deform(v.P(), source.bbox, strength);
-      anchors = SampleAnchors(source, target, row.anchors);
+      for (Vertex &v : target.vert) v.P() = Bend(v.P(), source.bbox, strength);
+      anchors = FarthestPointAnchors(source, target, row.anchors);
       options.gridNodes = row.nodes;
       options.steps = 40;
       ComputeMap(source, target, anchors, options, result);

@@ -7,8 +7,10 @@
 #include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/topology.h>
 #include <wrap/io_trimesh/import.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -121,6 +123,23 @@ void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide) {  // faces split in ha
   Finish(m);
 }
 
+void RefineMidpoint(Mesh &m, int times) {
+  for (int r = 0; r < times; ++r) {
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
+    vcg::tri::Refine<Mesh, vcg::tri::MidPoint<Mesh>>(m, vcg::tri::MidPoint<Mesh>(&m), 0);
+  }
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+  Finish(m);
+}
+
+Point3 Bend(const Point3 &p, const Box3 &box, double strength) {
+  const Point3 q = (p - box.Center()) / box.Diag();
+  const double s = strength;
+  const Point3 bent((1 + 0.3 * s) * q.X(), (1 - 0.2 * s) * q.Y() + 0.6 * s * q.X() * q.X(), q.Z() + 0.3 * s * q.Y() * q.X());
+  const double cos = std::cos(0.4 * s), sin = std::sin(0.4 * s);
+  return Point3(cos * bent.X() - sin * bent.Z(), bent.Y(), sin * bent.X() + cos * bent.Z()) * box.Diag();
+}
+
 void MakeDoubleTorus(Mesh &m, double r, int cells) {
   using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<float>>;
   using Walker = vcg::tri::TrivialWalker<Mesh, Volume>;
@@ -219,6 +238,20 @@ std::vector<AnchorPair> ReadAnchorPairs(const std::string &sourcePP, const std::
   }
   if (pairs.size() != b.size()) throw std::runtime_error(targetPP + " has anchors that " + sourcePP + " lacks");
   return pairs;
+}
+
+std::vector<AnchorPair> FarthestPointAnchors(const Mesh &source, const Mesh &target, int count) {
+  std::vector<AnchorPair> anchors;
+  if (count == 0) return anchors;
+  std::vector<double> distance(source.vert.size(), 1e300);
+  std::size_t next = 0;
+  for (int a = 0; a < count; ++a) {
+    anchors.push_back({source.vert[next].cP(), target.vert[next].cP(), "a" + std::to_string(a)});
+    for (std::size_t v = 0; v < source.vert.size(); ++v)
+      distance[v] = std::min(distance[v], vcg::Distance(source.vert[v].cP(), source.vert[next].cP()));
+    next = std::max_element(distance.begin(), distance.end()) - distance.begin();
+  }
+  return anchors;
 }
 
 } // namespace eulermap::testing

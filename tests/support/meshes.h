@@ -29,6 +29,13 @@ void MakeBox(Mesh &m, const Box3 &box, int cellsPerSide = 1);  // 8 vertices wit
 void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv = 64, int tubeDiv = 32,
                TexCoordKind texCoords = TexCoordKind::PerWedge);
 
+// Every edge split at its midpoint, `times` times (4^times as many faces); compacted.
+void RefineMidpoint(Mesh &m, int times);
+
+// A smooth non-rigid deformation of the point p of a mesh with box `box`: stretch, bend and
+// turn, scaled by `strength` (0: the identity). The benchmark's targets.
+Point3 Bend(const Point3 &p, const Box3 &box, double strength);
+
 // Genus 2: the zero set of (x^2 (1 - x^2) - y^2)^2 + z^2 - r^2, a tube around the figure
 // eight y^2 = x^2 (1 - x^2) (two loops crossing at the origin) in [-1.2, 1.2] x [-0.8, 0.8]
 // x [-0.4, 0.4], by vcglib's marching cubes on `cells` cells along x; outward-oriented.
@@ -45,5 +52,10 @@ namespace eulermap::testing {
 // Anchor pairs from two MeshLab picked-points files, matched by point name (a plain
 // reader for the tests; the plugin reads .pp files with Qt's XML reader).
 std::vector<AnchorPair> ReadAnchorPairs(const std::string &sourcePP, const std::string &targetPP);
+
+// `count` anchor pairs for a target made vertex by vertex from the source (same vertex
+// order): farthest-point samples among the source's vertices, each paired with the same
+// vertex of the target. Farthest points are extremities, so many lie on tips.
+std::vector<AnchorPair> FarthestPointAnchors(const Mesh &source, const Mesh &target, int count);
 
 } // namespace eulermap::testing
