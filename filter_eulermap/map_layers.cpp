@@ -177,6 +177,7 @@ std::map<std::string, QVariant> ReportFigures(const Report &r) {
       {"flipped_before_untangling", q.flippedBeforeUntangling},
       {"longest_edge_cells", q.longestEdgeCells},
       {"anchor_error_cells", q.anchorErrorCells},
+      {"anchor_error_resolved_cells", q.ResolvedAnchorErrorCells()},
       {"mean_distortion", q.meanDistortion},
       {"solver_iterations", double(r.solverFigures.totalIterations)},
       {"time_sdf_s", r.times.sdf},

@@ -78,6 +78,11 @@ def test_sample(name, source, target, expect):
         n = len(re.findall(r'<point [^>]*active="1"', open(os.path.join(SAMPLES, expect["anchors"])).read()))
         assert n >= 6 and figures["anchors"] == n, f"{figures['anchors']} anchors used, {expect['anchors']} has {n}"
         assert any(l.startswith(f"anchors: {n} named pairs") for l in log), f"the log does not report {n} pairs"
+        # Per anchor (report.h, AnchorFigure): its error in the log, and within a cell for those the grid resolves.
+        names = re.findall(r'<point [^>]*active="1"[^>]*name="([^"]*)"', open(os.path.join(SAMPLES, expect["anchors"])).read())
+        per_anchor = next((l for l in log if l.startswith("anchors (error in cells")), "")
+        assert names and all(f" {a} " in per_anchor for a in names), f"the log's per-anchor line lacks some of {names}"
+        assert figures["anchor_error_resolved_cells"] <= min(figures["anchor_error_cells"], 1.0)
 
     for layer, path in ((0, src), (1, tgt)):
         a, m = meshes.read_mesh(path), ms.mesh(layer)
