@@ -15,8 +15,9 @@ struct Triangle {
 
 // p minus its nearest point on triangle t: the nearest point by the Voronoi regions of the
 // triangle's corners, edges and face (barycentric tests on the projections of p). Not
-// vcglib's: vcg::TrianglePointDistance (exact, but a normalised plane, a projection and three segment distances per call) made this SDF 2.8x slower (sphere,
-// 96^3, one thread: 0.78 -> 2.22 s); face::PointDistanceBase needs face normals and its
+// vcglib's: vcg::TrianglePointDistance (exact, but a normalised plane, a projection and
+// three segment distances per call) made this SDF 2.8x slower (sphere, 96^3, one thread:
+// 0.78 -> 2.22 s); face::PointDistanceBase needs face normals and its
 // 1e-6 tolerances put it off by up to 1e-3 cells (test_sdf).
 Point3 Offset(const Triangle &t, const Point3 &p) {
   const Point3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;

@@ -35,7 +35,7 @@ void HermiteField::Mixed(int i, int j, int k, double out[4]) const {
   out[3] = (difference(0, 1, 2) + difference(1, 0, 2) + difference(2, 0, 1)) / 3;  // f_xyz
 }
 
-double HermiteField::Evaluate(const Point3 &p, Point3 *gradient) const {
+double HermiteField::Value(const Point3 &p, Point3 *gradient) const {
   int c[3];
   double w[3];
   Point3 outside;
@@ -75,14 +75,6 @@ double HermiteField::Evaluate(const Point3 &p, Point3 *gradient) const {
   const bool out = outside != Point3(0, 0, 0);
   if (gradient) *gradient = out ? Point3(outside).Normalize() : g / h;
   return out ? value + outside.Norm() * h : value;
-}
-
-double HermiteField::Value(const Point3 &p) const { return Evaluate(p, nullptr); }
-
-Point3 HermiteField::Gradient(const Point3 &p) const {
-  Point3 g;
-  Evaluate(p, &g);
-  return g;
 }
 
 } // namespace eulermap

@@ -38,15 +38,13 @@ class HermiteField {
   // outlive this object.
   HermiteField(const ScalarField &f, const VectorField &gradient);
 
-  // f(p) and its gradient, from the Hermite polynomial of p's cell; outside the grid's box
-  // both are extended as ScalarField::Value / Gradient do.
-  double Value(const Point3 &p) const;
-  Point3 Gradient(const Point3 &p) const;
+  // f(p) from the Hermite polynomial of p's cell, and its gradient there when `gradient` is
+  // given (one evaluation for both); outside the grid's box both are extended as
+  // ScalarField::Value / Gradient do.
+  double Value(const Point3 &p, Point3 *gradient = nullptr) const;
   const Grid &grid() const { return f_.grid; }
 
  private:
-  // The polynomial at p: its value, and its gradient when `gradient` is given.
-  double Evaluate(const Point3 &p, Point3 *gradient) const;
   // Mixed derivatives f_xy, f_xz, f_yz, f_xyz at node (i, j, k).
   void Mixed(int i, int j, int k, double out[4]) const;
 

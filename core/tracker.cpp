@@ -9,12 +9,13 @@ Tracker::Tracker(std::vector<Point3> points, std::vector<double> levels)
 
 namespace {
 
-// The pull-back of tracker.h on any field with Value and Gradient; h: its grid cell.
-template <class Field> Point3 PullBackOn(const Field &f, double h, Point3 p, double level) {
+// The pull-back of tracker.h: value(q) = f(q), gradient(q) = grad f(q), always asked at the
+// point value was last asked at; h: the grid cell.
+template <class Value, class Gradient> Point3 PullBackOn(Value value, Gradient gradient, double h, Point3 p, double level) {
   for (int it = 0; it < 8; ++it) {
-    const double e = f.Value(p) - level;
+    const double e = value(p) - level;
     if (std::abs(e) < 1e-4 * h) break;
-    const Point3 g = f.Gradient(p);
+    const Point3 g = gradient(p);
     const double g2 = g.SquaredNorm();
     if (g2 < 1e-12) break;
     Point3 step = g * (e / g2);
@@ -27,8 +28,18 @@ template <class Field> Point3 PullBackOn(const Field &f, double h, Point3 p, dou
 
 } // namespace
 
-Point3 PullBack(const ScalarField &f, Point3 p, double level) { return PullBackOn(f, f.grid.h, p, level); }
-Point3 PullBack(const HermiteField &f, Point3 p, double level) { return PullBackOn(f, f.grid().h, p, level); }
+Point3 PullBack(const ScalarField &f, Point3 p, double level) {
+  // The gradient only when the point is not there yet: most points of a step are after one
+  // Newton step.
+  return PullBackOn([&](const Point3 &q) { return f.Value(q); }, [&](const Point3 &q) { return f.Gradient(q); },
+                    f.grid.h, p, level);
+}
+
+Point3 PullBack(const HermiteField &f, Point3 p, double level) {
+  Point3 g;  // the gradient comes with the value, from one evaluation of the polynomial
+  return PullBackOn([&](const Point3 &q) { return f.Value(q, &g); }, [&](const Point3 &) { return g; }, f.grid().h,
+                    p, level);
+}
 
 void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt) {
 #pragma omp parallel for schedule(static)
