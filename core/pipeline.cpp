@@ -3,6 +3,8 @@
 #include "closest.h"
 #include "grid.h"
 #include "hermite_field.h"
+#include "input.h"
+#include "memory.h"
 #include "morph.h"
 #include "quality.h"
 #include "sdf.h"
@@ -20,6 +22,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -51,22 +54,53 @@ class ThreadScope {
   int saved_;
 };
 
-void CopyMesh(Mesh &to, Mesh &from) {
-  vcg::tri::Append<Mesh, Mesh>::MeshCopy(to, from, false, false);
+void CopyMesh(Mesh &to, const Mesh &from) {
+  // vcglib 2020.09's Append takes the mesh it reads as non-const; it only reads it.
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(to, const_cast<Mesh &>(from), false, false);
   vcg::tri::UpdateBounding<Mesh>::Box(to);
 }
 
-int LiveFaces(const Mesh &m) { return m.fn; }
+// in:  f0 or f1 on the grid, the mesh's role
+// out: throws Error when no node lies inside: the morph moves insides, and a mesh that
+//      encloses nothing at this grid (an open sheet, or a part thinner than a cell) has none.
+//      Nodes on the surface itself read f = +-1e-15 or so (a node on a lone triangle's plane
+//      has winding number 1/2): inside means deeper than kInsideDepth of a cell.
+void RequireInside(const ScalarField &f, const char *role) {
+  constexpr double kInsideDepth = 1e-6;
+  for (double v : f.values)
+    if (v < -kInsideDepth * f.grid.h) return;
+  throw Error(std::string("the ") + role + " mesh encloses no volume at this grid: it is open or flat (a sheet "
+              "bounds no inside) or thinner than a grid cell. Close its holes (Filters > Remeshing, "
+              "Simplification and Reconstruction > Close Holes), or raise grid_resolution for a thin part");
+}
 
-void Validate(const Mesh &source, const Mesh &target, const std::vector<AnchorPair> &anchors, const Options &o) {
-  if (&source == &target) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
-  if (LiveFaces(source) == 0) throw Error("the source mesh has no faces: the map needs a triangle mesh");
-  if (LiveFaces(target) == 0) throw Error("the target mesh has no faces: the map needs a triangle mesh");
-  if (o.gridResolution < 8) throw Error("grid_resolution must be at least 8 cells");
-  if (o.steps < 1) throw Error("steps must be at least 1");
-  if (!(o.alpha > 0)) throw Error("alpha must be positive");
-  if (!(o.holeRadius > 0)) throw Error("hole_radius must be positive");
-  (void)anchors;
+// Below these figures a map has failed somewhere (WarnOnFailure). A sound map of the tests'
+// shapes covers 96-100% of its target and brings 98-100% of its points onto it.
+constexpr double kLowCoverage = 0.9;
+constexpr double kLowOnSurface = 0.9;
+constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
+
+// Warnings for a map whose own figures say it failed (Report::warnings): what to change.
+void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
+  auto percent = [](double x) { return std::to_string(int(std::lround(100 * x))) + "%"; };
+  if (q.coverage < kLowCoverage)
+    rep.warnings.push_back("the map reaches only " + percent(q.coverage) + " of the target (uncovered parts above): "
+                           "give anchor pairs on the parts it misses, place the meshes closer (align centre-and-scale), "
+                           "or raise grid_resolution if those parts are thin");
+  if (q.onSurfaceRate < kLowOnSurface)
+    rep.warnings.push_back("only " + percent(q.onSurfaceRate) + " of the tracked points reached the target before the "
+                           "last projection: raise steps or grid_resolution");
+  std::string far;
+  for (const AnchorFigure &a : q.anchorFigures)
+    if (a.Resolved() && a.error > kFarAnchorCells) far += (far.empty() ? "" : ", ") + a.name;
+  if (!far.empty())
+    rep.warnings.push_back("anchors " + far + " end more than " + std::to_string(int(kFarAnchorCells)) +
+                           " cells from their partners: check that each name marks the same place on both meshes");
+  if (mirror.Mirrored())
+    rep.warnings.push_back("the anchors mirror each other: the target's anchors fit the source's as a mirror image "
+                           "(residual " + std::to_string(mirror.mirroredResidual) + ") far better than as they are (" +
+                           std::to_string(mirror.residual) + "); left and right may be swapped in one of the "
+                           "picked-points files");
 }
 
 std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align align) {
@@ -78,15 +112,26 @@ std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align alig
 
 } // namespace
 
-void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &anchors, const Options &options,
-                Result &result, const Progress &progress, const std::vector<Point3> &samples) {
-  Validate(source, target, anchors, options);
+void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
+                const Options &options, Result &result, const Progress &progress, const std::vector<Point3> &samples) {
+  if (&sourceIn == &targetIn) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
+  options.Validate();
+  CheckAnchors(anchors);
+  for (std::size_t n = 0; n < samples.size(); ++n)
+    if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
+      throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
   const ThreadScope threads(options.threads);
   auto report = [&](double share, const std::string &stage) {
     if (progress && !progress(share, stage)) throw Error("cancelled");
   };
   Report &rep = result.report;
   rep = Report();
+  report(0.0, "checking the meshes");
+  Mesh source, target;  // private copies, repaired (input.h)
+  CopyMesh(source, sourceIn);
+  CopyMesh(target, targetIn);
+  PrepareMesh(source, "source", rep.repairs);
+  PrepareMesh(target, "target", rep.repairs);
   rep.steps = options.steps;
   rep.alpha = options.alpha;
   rep.anchors = int(anchors.size());
@@ -96,9 +141,6 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
                                                                              : "Gauss-Seidel (red-black)";
   rep.sourceVertices = source.vn;
   rep.placement = DescribePlacement(anchors, options.align);
-
-  vcg::tri::UpdateBounding<Mesh>::Box(source);
-  vcg::tri::UpdateBounding<Mesh>::Box(target);
 
   // Placement P of the target in the source's frame (placement.h).
   std::vector<Point3> a, b;
@@ -115,9 +157,13 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   box.Add(placed.bbox);
   const Grid grid = options.gridNodes == vcg::Point3i(0, 0, 0) ? Grid::Enclosing(box, options.gridResolution)
                                                                 : Grid::WithNodes(box, options.gridNodes);
-  if (grid.NodeCount() > options.maxGridNodes)
-    throw Error("the grid would have " + std::to_string(grid.NodeCount()) + " nodes, more than the " +
-                std::to_string(options.maxGridNodes) + " that fit in memory: lower grid_resolution");
+  const std::size_t pointCount = source.vert.size() * 2 + a.size() + samples.size();  // surgery may add as many
+  const std::size_t need = RunBytes(grid.NodeCount(), pointCount), room = AvailableBytes();
+  if (need > room)
+    throw Error("grid_resolution " + std::to_string(options.gridResolution) + ": the grid would have " +
+                std::to_string(grid.NodeCount()) + " nodes and the run about " + std::to_string(need >> 20) +
+                " MiB, but this process may have only " + std::to_string(room >> 20) +
+                " MiB more: lower grid_resolution (memory grows with its cube)");
   rep.gridNodes = grid.dims;
   rep.cellSize = grid.h;
 
@@ -136,6 +182,8 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
     f1 = SignedDistance(placed, grid, &gradient1);
   }
   rep.times.sdf = Seconds(t0);
+  RequireInside(f0, "source");
+  RequireInside(f1, "target");
 
   // INT set-up: anchors' interpolation (morph.h).
   t0 = Clock::now();
@@ -202,6 +250,10 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   // The cut source (surgery.h), and the images of its vertices.
   Mesh &cut = result.cut;
   const std::vector<Point3> images = surgery.Build(source, tracked, cut, rep.holes);
+  if (cut.fn == 0)
+    throw Error("surgery removed every face of the source (" + std::to_string(rep.holes.size()) +
+                " holes cut): lower hole_radius, or raise grid_resolution so the parts that change are several "
+                "cells wide");
   rep.saddles = surgery.Saddles();
   rep.pointsAdded = surgery.PointsAdded();
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
@@ -234,6 +286,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
   const ClosestPoint targetIndex(target);
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
+  report(0.93, "untangling the map");
   if (options.untangle) {
     rep.untangledVertices = Untangle(mapped, targetIndex);
     for (std::size_t n = 0; n < mapped.vert.size(); ++n) targetPosition[n] = mapped.vert[n].cP();
@@ -244,6 +297,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   rep.quality.meanDistortion = StoreDistortion(cut, mapped);  // the cut's vertex quality, unless pulled below
 
   // The inverse method (transfer.h): the cut reads the target at the final images.
+  report(0.96, "pulling the target's attributes");
   std::vector<ClosestHit> onTarget(mapped.vert.size());
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(mapped.vert.size()); ++n) onTarget[n] = targetIndex.Query(mapped.vert[n].cP());
@@ -269,6 +323,7 @@ void ComputeMap(Mesh &source, Mesh &target, const std::vector<AnchorPair> &ancho
   rep.cutEulerCharacteristic = topo.eulerCharacteristic;
   rep.cutVertices = cut.vn;
   rep.cutFaces = cut.fn;
+  WarnOnFailure(rep.quality, TestMirror(b, a), rep);
   rep.times.quality = Seconds(t0);
   rep.peakMemoryKiB = PeakMemoryKiB();
   report(1.0, "done");

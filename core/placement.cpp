@@ -166,6 +166,27 @@ Similarity FitPlacement(const Mesh &source, const Mesh &target, const std::vecto
   return s;
 }
 
+MirrorTest TestMirror(const std::vector<Point3> &from, const std::vector<Point3> &to) {
+  MirrorTest test;
+  if (from.size() < 4 || from.size() != to.size()) return test;
+  const Eigen::Matrix3Xd f = Columns(from), t = Columns(to);
+  Eigen::Vector3d sf, st;
+  PrincipalDirection(f.colwise() - f.rowwise().mean(), sf);
+  PrincipalDirection(t.colwise() - t.rowwise().mean(), st);
+  const double kFlat = 0.05;  // third spread against the first: below it the anchors are about coplanar
+  if (sf(2) <= kFlat * sf(0) || st(2) <= kFlat * st(0)) return test;
+  auto rms = [&](const Eigen::Matrix3Xd &x) {
+    const Eigen::Matrix4d m = Eigen::umeyama(x, t, true);
+    return std::sqrt(((m.topLeftCorner<3, 3>() * x).colwise() + Eigen::Vector3d(m.topRightCorner<3, 1>()) - t)
+                         .squaredNorm() / double(x.cols()));
+  };
+  Eigen::Matrix3Xd mirrored = f;
+  mirrored.row(0) *= -1;
+  test.residual = rms(f);
+  test.mirroredResidual = rms(mirrored);
+  return test;
+}
+
 // Applies s to m in place.
 //   m:  mesh; live vertex positions become s(p), vertex and face normals are rotated
 //       (their lengths are kept), and the bounding box is recomputed

@@ -36,6 +36,17 @@ Point3 SurfaceCentroid(const Mesh &mesh);
 Similarity FitPlacement(const Mesh &source, const Mesh &target, const std::vector<Point3> &from,
                         const std::vector<Point3> &to, Align align);
 
+// Whether the anchors mirror each other (left and right swapped): the best similarity
+// taking `from` (b_i) onto `to` (a_i), and the best one taking the mirror image of `from`
+// (x negated) onto `to`, both by Umeyama's least squares, as RMS residuals. Only 4 or more
+// anchors that span space can tell (3 points always fit their mirror image by a rotation):
+// otherwise both are 0.
+struct MirrorTest {
+  double residual = 0, mirroredResidual = 0;
+  bool Mirrored() const { return mirroredResidual < 0.5 * residual; }
+};
+MirrorTest TestMirror(const std::vector<Point3> &from, const std::vector<Point3> &to);
+
 // Applies s to every vertex of m (positions and normals).
 void Transform(Mesh &m, const Similarity &s);
 

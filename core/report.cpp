@@ -28,6 +28,7 @@ double MapQuality::ResolvedAnchorErrorCells() const {
 
 std::string Report::ToText() const {
   std::ostringstream o;
+  for (const std::string &r : repairs) o << "repaired: " << r << "\n";
   o << Format("grid: %d x %d x %d nodes, cell %.6g; steps: %d; alpha: %g; threads: %d\n", gridNodes.X(),
               gridNodes.Y(), gridNodes.Z(), cellSize, steps, alpha, threads);
   o << Format("source vertices: %d; anchors: %d; placement: %s; morph: %s\n", sourceVertices, anchors,
@@ -89,6 +90,7 @@ std::string Report::ToText() const {
               100 * quality.flippedBeforeUntangling, untangledVertices);
   if (!texture.empty()) o << Format("texture: %s\n", texture.c_str());
   if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
+  for (const std::string &w : warnings) o << "warning: " << w << "\n";
   return o.str();
 }
 

@@ -81,6 +81,8 @@ struct HoleEvent {
 };
 
 struct Report {
+  std::vector<std::string> repairs;   // what input.h repaired on the private copies
+  std::vector<std::string> warnings;  // the map's own figures say it failed somewhere: what to change
   vcg::Point3i gridNodes = vcg::Point3i(0, 0, 0);
   double cellSize = 0;
   int steps = 0;

@@ -132,6 +132,11 @@ bool ParseAnchorPairs(const QString &text, std::vector<std::pair<int, int>> &pai
     }
     pairs.emplace_back(s, t);
   }
+  if (pairs.empty()) {
+    error = QString("anchor_pairs: '%1' holds no pair of vertex indices; write source:target pairs separated by "
+                    "commas, e.g. '12:305, 40:77', or leave it empty for no anchors").arg(text);
+    return false;
+  }
   return true;
 }
 

@@ -11,36 +11,6 @@ namespace eulermap::plugin {
 
 namespace {
 
-constexpr int kMinGrid = 8, kMaxGrid = 4096;
-
-bool CheckMesh(const InputLayer &layer, const char *role, QString &error) {
-  if (layer.mesh.FN() == 0) {
-    error = QString("the %1 layer '%2' has no faces (%3 vertices): the map needs triangle meshes; "
-                    "pick another layer or rebuild a surface from the points first")
-                .arg(role, layer.label).arg(layer.mesh.VN());
-    return false;
-  }
-  if (!(layer.mesh.bbox.Diag() > 0)) {
-    error = QString("the %1 layer '%2' is degenerate (its bounding box has no extent)").arg(role, layer.label);
-    return false;
-  }
-  return true;
-}
-
-bool CheckOptions(const Options &o, QString &error) {
-  if (o.gridResolution < kMinGrid || o.gridResolution > kMaxGrid)
-    error = QString("grid_resolution %1 is out of range: give %2 to %3 cells on the longest axis (64 suits "
-                    "most meshes)")
-                .arg(o.gridResolution).arg(kMinGrid).arg(kMaxGrid);
-  else if (o.steps < 1)
-    error = QString("steps %1: give at least 1 time step (40 suits most meshes)").arg(o.steps);
-  else if (!(o.alpha > 0))
-    error = QString("alpha %1: the smoothness weight must be positive (2 suits most meshes)").arg(o.alpha);
-  else if (!(o.holeRadius > 0))
-    error = QString("hole_radius %1: the radius must be positive, in grid cells (1 is the default)").arg(o.holeRadius);
-  return error.isEmpty();
-}
-
 QStringList Lines(const std::string &text) {
   QStringList lines = QString::fromStdString(text).split('\n');
   while (!lines.isEmpty() && lines.last().trimmed().isEmpty()) lines.removeLast();
@@ -80,9 +50,6 @@ int DefaultTargetLayer(int current, const std::vector<int> &layers) {
 
 bool MapLayers(const Request &request, InputLayer &source, InputLayer &target, const ProgressFn &progress,
                Result &result, QStringList &log, QString &error) {
-  if (!CheckMesh(source, "source", error) || !CheckMesh(target, "target", error)) return false;
-  if (!CheckOptions(request.options, error)) return false;
-
   log << QString("Eulerian Surface Map: '%1' (%2 vertices, %3 faces) -> '%4' (%5 vertices, %6 faces)")
              .arg(source.label).arg(source.mesh.VN()).arg(source.mesh.FN())
              .arg(target.label).arg(target.mesh.VN()).arg(target.mesh.FN());
@@ -159,6 +126,8 @@ std::map<std::string, QVariant> ReportFigures(const Report &r) {
   int cuts = 0;
   for (const SaddleEvent &s : r.saddles) cuts += s.cut ? 1 : 0;
   return {
+      {"repairs", int(r.repairs.size())},
+      {"warnings", int(r.warnings.size())},
       {"grid_cell_size", r.cellSize},
       {"steps", r.steps},
       {"anchors", r.anchors},

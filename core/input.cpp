@@ -1,0 +1,187 @@
+#include "input.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+
+namespace eulermap {
+
+namespace {
+
+bool Finite(const Point3 &p) { return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z()); }
+
+void Note(std::vector<std::string> &notes, const std::string &role, int count, const std::string &what) {
+  if (count > 0) notes.push_back(role + ": " + std::to_string(count) + " " + what);
+}
+
+// Removes the faces `remove` says, then the vertices left without a face; returns the number
+// of vertices removed.
+template <class Pred> int RemoveFacesWhere(Mesh &mesh, Pred remove, int &faces) {
+  faces = 0;
+  for (Face &f : mesh.face)
+    if (!f.IsD() && remove(f)) vcg::tri::Allocator<Mesh>::DeleteFace(mesh, f), ++faces;
+  return vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(mesh);
+}
+
+// Step 5 of PrepareMesh: vertices with the same position, texture coordinate and colour
+// become one (the first in storage order); returns how many went.
+int Weld(Mesh &mesh) {
+  std::vector<Vertex *> order;
+  for (Vertex &v : mesh.vert)
+    if (!v.IsD()) order.push_back(&v);
+  auto key = [](const Vertex *v) {
+    return std::make_tuple(v->cP().X(), v->cP().Y(), v->cP().Z(), v->cT().U(), v->cT().V(), v->cC()[0], v->cC()[1],
+                           v->cC()[2], v->cC()[3]);
+  };
+  std::stable_sort(order.begin(), order.end(), [&](const Vertex *a, const Vertex *b) { return key(a) < key(b); });
+  std::vector<Vertex *> into(mesh.vert.size(), nullptr);  // per vertex index: the vertex it merges into
+  int merged = 0;
+  for (std::size_t n = 1; n < order.size(); ++n)
+    if (key(order[n]) == key(order[n - 1])) {
+      Vertex *first = into[vcg::tri::Index(mesh, order[n - 1])];
+      into[vcg::tri::Index(mesh, order[n])] = first ? first : order[n - 1];
+      ++merged;
+    }
+  if (merged == 0) return 0;
+  for (Face &f : mesh.face)
+    if (!f.IsD())
+      for (int c = 0; c < 3; ++c)
+        if (Vertex *to = into[vcg::tri::Index(mesh, f.V(c))]) f.V(c) = to;
+  for (std::size_t n = 0; n < into.size(); ++n)
+    if (into[n]) vcg::tri::Allocator<Mesh>::DeleteVertex(mesh, mesh.vert[n]);
+  return merged;
+}
+
+// Connected parts of the live faces (faces sharing a vertex): per face index, its part.
+std::vector<int> FaceParts(const Mesh &mesh, int &parts) {
+  std::vector<int> parent(mesh.vert.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Face &f : mesh.face)
+    if (!f.IsD())
+      for (int c = 1; c < 3; ++c)
+        parent[find(int(vcg::tri::Index(mesh, f.cV(c))))] = find(int(vcg::tri::Index(mesh, f.cV(0))));
+  std::vector<int> label(mesh.vert.size(), -1), part(mesh.face.size(), -1);
+  parts = 0;
+  for (std::size_t n = 0; n < mesh.face.size(); ++n) {
+    if (mesh.face[n].IsD()) continue;
+    const int root = find(int(vcg::tri::Index(mesh, mesh.face[n].cV(0))));
+    if (label[root] < 0) label[root] = parts++;
+    part[n] = label[root];
+  }
+  return part;
+}
+
+// Step 6 of PrepareMesh: parts whose signed volume (1/6 sum of p0 . (p1 x p2), about the
+// part's centroid) is negative have every face turned; returns the faces turned.
+int OrientOutward(Mesh &mesh) {
+  int parts = 0;
+  const std::vector<int> part = FaceParts(mesh, parts);
+  std::vector<Point3> centre(parts, Point3(0, 0, 0));
+  std::vector<double> count(parts, 0), volume(parts, 0);
+  for (std::size_t n = 0; n < mesh.face.size(); ++n)
+    if (part[n] >= 0)
+      for (int c = 0; c < 3; ++c) centre[part[n]] += mesh.face[n].cP(c), count[part[n]] += 1;
+  for (int p = 0; p < parts; ++p) centre[p] /= count[p];
+  for (std::size_t n = 0; n < mesh.face.size(); ++n)
+    if (part[n] >= 0) {
+      const Face &f = mesh.face[n];
+      const Point3 &o = centre[part[n]];
+      volume[part[n]] += (f.cP(0) - o).dot((f.cP(1) - o) ^ (f.cP(2) - o));
+    }
+  int turned = 0;
+  for (std::size_t n = 0; n < mesh.face.size(); ++n)
+    if (part[n] >= 0 && volume[part[n]] < 0) {
+      Face &f = mesh.face[n];
+      std::swap(f.V(1), f.V(2));
+      std::swap(f.WT(1), f.WT(2));
+      ++turned;
+    }
+  return turned;
+}
+
+} // namespace
+
+void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &notes) {
+  using Clean = vcg::tri::Clean<Mesh>;
+  if (mesh.fn == 0)
+    throw Error("the " + role + " mesh has no faces (" + std::to_string(mesh.vn) + " vertices): the map needs a " +
+                "triangle mesh; pick another layer or rebuild a surface from the points first");
+
+  // 1, 2.
+  Note(notes, role, Clean::RemoveDegenerateFace(mesh), "faces that repeat a vertex removed");
+  Note(notes, role, Clean::RemoveUnreferencedVertex(mesh), "vertices that no face uses removed");
+
+  // 3.
+  int nonFinite = 0;
+  long first = -1;
+  for (const Vertex &v : mesh.vert)
+    if (!v.IsD() && !Finite(v.cP()) && nonFinite++ == 0) first = long(vcg::tri::Index(mesh, v));
+  if (nonFinite > 0)
+    throw Error("the " + role + " mesh has " + std::to_string(nonFinite) + " vertices with a NaN or infinite " +
+                "coordinate (the first is vertex " + std::to_string(first) + "): remove or repair them and apply " +
+                "the filter again");
+  if (mesh.fn == 0)
+    throw Error("every face of the " + role + " mesh repeats a vertex: the map needs a triangle mesh");
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+  const double diag = mesh.bbox.Diag();
+  if (!(diag > 0)) throw Error("the " + role + " mesh has no extent: all its vertices lie at one point");
+
+  // 4.
+  const double minDoubleArea = 1e-12 * diag * diag;
+  int zeroArea = 0;
+  const int orphans = RemoveFacesWhere(
+      mesh, [&](const Face &f) { return ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() <= minDoubleArea; },
+      zeroArea);
+  if (mesh.fn == 0)
+    throw Error("every face of the " + role + " mesh has zero area (its vertices lie on lines or points): the " +
+                "map needs a surface");
+  Note(notes, role, zeroArea, "faces of zero area removed" +
+                                   (orphans > 0 ? " (with " + std::to_string(orphans) + " vertices only they used)"
+                                                : std::string()));
+
+  // 5.
+  const int welded = Weld(mesh);
+  Note(notes, role, welded, "vertices at the same place as another welded (a triangle soup, as STL stores meshes)");
+  if (welded > 0) {
+    int degenerate = 0;
+    RemoveFacesWhere(mesh, [](const Face &f) { return f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0); },
+                     degenerate);
+    Note(notes, role, Clean::RemoveDuplicateFace(mesh) + degenerate, "faces made twice by the welding removed");
+  }
+
+  // 6.
+  Note(notes, role, OrientOutward(mesh), "faces of parts that pointed inward turned outward");
+
+  if (std::size_t(mesh.vn) != mesh.vert.size() || std::size_t(mesh.fn) != mesh.face.size())
+    vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+}
+
+void CheckAnchors(const std::vector<AnchorPair> &anchors) {
+  Box3 box[2];
+  for (const AnchorPair &a : anchors) {
+    for (const auto &[p, side] : {std::pair(a.source, "source"), std::pair(a.target, "target")})
+      if (!Finite(p))
+        throw Error("anchor '" + a.name + "' has a NaN or infinite coordinate on the " + side +
+                    ": correct it in the picked-points file or give another point");
+    box[0].Add(a.source), box[1].Add(a.target);
+  }
+  for (int side = 0; side < 2; ++side) {
+    auto at = [&](std::size_t n) { return side ? anchors[n].target : anchors[n].source; };
+    for (std::size_t i = 0; i < anchors.size(); ++i)
+      for (std::size_t j = i + 1; j < anchors.size(); ++j)
+        if (vcg::Distance(at(i), at(j)) <= 1e-9 * box[side].Diag())
+          throw Error("anchors '" + anchors[i].name + "' and '" + anchors[j].name + "' lie at the same point of the " +
+                      (side ? "target" : "source") + ": give each anchor its own place, or remove one");
+  }
+}
+
+} // namespace eulermap

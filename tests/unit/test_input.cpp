@@ -1,0 +1,271 @@
+// What comes in (issue 13): input.h's checks and repairs, Options::Validate and the memory
+// budget, each asserted on what the pipeline then does: a clean Error naming the problem, or
+// a map measured as sound.
+#include "core/input.h"
+#include "core/memory.h"
+#include "core/pipeline.h"
+#include "tests/support/meshes.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/append.h>
+
+#include <sys/resource.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace eulermap;
+using namespace eulermap::testing;
+
+namespace {
+
+// Runs the map and returns the Error's message ("" when it succeeds).
+std::string MapError(const Mesh &source, const Mesh &target, const Options &options = Options(),
+                     const std::vector<AnchorPair> &anchors = {}, Result *out = nullptr) {
+  Result result;
+  try {
+    ComputeMap(source, target, anchors, options, out ? *out : result);
+  } catch (const Error &e) {
+    return e.what();
+  }
+  return "";
+}
+
+Options Small() {
+  Options o;
+  o.gridResolution = 32;
+  o.steps = 12;
+  return o;
+}
+
+// Every face its own three vertices, as an STL file stores a mesh.
+void MakeSoup(const Mesh &from, Mesh &soup) {
+  for (const Face &f : from.face) {
+    auto v = vcg::tri::Allocator<Mesh>::AddVertices(soup, 3);
+    for (int c = 0; c < 3; ++c) v[c].P() = f.cP(c);
+    vcg::tri::Allocator<Mesh>::AddFace(soup, &*v, &*v + 1, &*v + 2);
+  }
+}
+
+double SignedVolume(const Mesh &m) {
+  double v = 0;
+  for (const Face &f : m.face) v += f.cP(0).dot(f.cP(1) ^ f.cP(2)) / 6;
+  return v;
+}
+
+bool Says(const std::vector<std::string> &notes, const std::string &part) {
+  for (const std::string &n : notes)
+    if (n.find(part) != std::string::npos) return true;
+  return false;
+}
+
+} // namespace
+
+TEST(Input, CleanMeshIsLeftAsItIs) {
+  Mesh m, copy;
+  MakeSphere(m, Point3(0, 0, 0), 1, 3);
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, m);
+  std::vector<std::string> notes;
+  PrepareMesh(copy, "source", notes);
+  EXPECT_TRUE(notes.empty());
+  ASSERT_EQ(copy.vert.size(), m.vert.size());
+  for (std::size_t n = 0; n < m.vert.size(); ++n) EXPECT_EQ(copy.vert[n].cP(), m.vert[n].cP());
+}
+
+TEST(Input, RepeatedIndexAndZeroAreaFacesAreRemoved) {
+  Mesh m;
+  MakeSphere(m, Point3(0, 0, 0), 1, 3);
+  const int faces = m.fn;
+  Vertex *v0 = &m.vert[0], *v1 = &m.vert[1];
+  vcg::tri::Allocator<Mesh>::AddFace(m, v0, v0, v1);  // "3 0 0 1"
+  const Point3 middle = (v0->cP() + v1->cP()) / 2;
+  auto extra = vcg::tri::Allocator<Mesh>::AddVertices(m, 1);  // on the segment v0 v1: a needle
+  extra->P() = middle;
+  vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[0], &m.vert[1], &*extra);
+  std::vector<std::string> notes;
+  PrepareMesh(m, "source", notes);
+  EXPECT_EQ(m.fn, faces);
+  EXPECT_TRUE(Says(notes, "1 faces that repeat a vertex removed")) << notes.size();
+  EXPECT_TRUE(Says(notes, "1 faces of zero area removed (with 1 vertices only they used)"));
+  // The map of such a mesh is the map of the clean one.
+  Mesh target;
+  MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.3, 0.8, 0.9), 4);
+  Result result;
+  EXPECT_EQ(MapError(m, target, Small(), {}, &result), "");
+  EXPECT_GE(result.report.quality.coverage, 0.97);
+  EXPECT_EQ(result.report.cutFaces, faces);
+}
+
+TEST(Input, NonFiniteCoordinatesAreRefusedUnlessNoFaceUsesThem) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 3);
+  MakeSphere(target, Point3(0, 0, 0), 1.2, 3);
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh m;
+    vcg::tri::Append<Mesh, Mesh>::MeshCopy(m, source);
+    m.vert[5].P().Y() = bad;
+    EXPECT_NE(MapError(m, target, Small()).find("vertices with a NaN or infinite coordinate (the first is vertex 5)"),
+              std::string::npos);
+    EXPECT_NE(MapError(target, m, Small()).find("the target mesh has 1 vertices with a NaN"), std::string::npos);
+  }
+  // A stray vertex no face uses (NaN, or 1e6 away) is dropped: it neither stops nor stretches the grid.
+  for (double stray : {std::numeric_limits<double>::quiet_NaN(), 1e6}) {
+    Mesh m;
+    vcg::tri::Append<Mesh, Mesh>::MeshCopy(m, source);
+    vcg::tri::Allocator<Mesh>::AddVertices(m, 1)->P() = Point3(stray, 0, 0);
+    Result result;
+    EXPECT_EQ(MapError(m, target, Small(), {}, &result), "");
+    EXPECT_TRUE(Says(result.report.repairs, "source: 1 vertices that no face uses removed"));
+    EXPECT_GE(result.report.quality.coverage, 0.97);
+    EXPECT_LT(result.report.cellSize, 0.1);
+  }
+}
+
+TEST(Input, MeshesWithoutSurfaceOrInsideAreRefused) {
+  Mesh sphere;
+  MakeSphere(sphere, Point3(0, 0, 0), 1, 3);
+  Mesh points;  // vertices only
+  for (auto v = vcg::tri::Allocator<Mesh>::AddVertices(points, 3); v != points.vert.end(); ++v) v->P() = Point3(0, 0, 0);
+  EXPECT_NE(MapError(points, sphere).find("the source mesh has no faces (3 vertices)"), std::string::npos);
+  Mesh collinear;  // every face on a line
+  auto v = vcg::tri::Allocator<Mesh>::AddVertices(collinear, 4);
+  for (int n = 0; n < 4; ++n) v[n].P() = Point3(n, 2 * n, 0);
+  vcg::tri::Allocator<Mesh>::AddFace(collinear, &collinear.vert[0], &collinear.vert[1], &collinear.vert[2]);
+  vcg::tri::Allocator<Mesh>::AddFace(collinear, &collinear.vert[1], &collinear.vert[2], &collinear.vert[3]);
+  EXPECT_NE(MapError(sphere, collinear).find("every face of the target mesh has zero area"), std::string::npos);
+  Mesh point;  // no extent
+  auto p = vcg::tri::Allocator<Mesh>::AddVertices(point, 3);
+  for (int n = 0; n < 3; ++n) p[n].P() = Point3(1, 2, 3);
+  vcg::tri::Allocator<Mesh>::AddFace(point, &*p, &*p + 1, &*p + 2);
+  EXPECT_NE(MapError(point, sphere).find("the source mesh has no extent"), std::string::npos);
+  Mesh triangle;  // a single open triangle bounds no inside
+  auto t = vcg::tri::Allocator<Mesh>::AddVertices(triangle, 3);
+  t[0].P() = Point3(0, 0, 0), t[1].P() = Point3(1, 0, 0), t[2].P() = Point3(0, 1, 0);
+  vcg::tri::Allocator<Mesh>::AddFace(triangle, &*t, &*t + 1, &*t + 2);
+  EXPECT_NE(MapError(triangle, sphere, Small()).find("the source mesh encloses no volume at this grid"),
+            std::string::npos);
+}
+
+TEST(Input, TriangleSoupIsWeldedAndMapsAsTheWeldedMesh) {
+  Mesh source, soup, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 3);
+  MakeSoup(source, soup);
+  MakeTorus(target, Point3(0, 0, 0), 1.0, 0.4);
+  std::vector<std::string> notes;
+  Mesh welded;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(welded, soup);
+  PrepareMesh(welded, "source", notes);
+  EXPECT_EQ(welded.vn, source.vn);
+  EXPECT_EQ(welded.fn, source.fn);
+  Result fromSoup, fromMesh;
+  ASSERT_EQ(MapError(soup, target, Small(), {}, &fromSoup), "");
+  ASSERT_EQ(MapError(source, target, Small(), {}, &fromMesh), "");
+  const Report &a = fromSoup.report, &b = fromMesh.report;
+  EXPECT_EQ(a.cutComponents, b.cutComponents);
+  EXPECT_EQ(a.cutBoundaryLoops, b.cutBoundaryLoops);
+  EXPECT_EQ(a.cutEulerCharacteristic, b.cutEulerCharacteristic);
+  EXPECT_NEAR(a.quality.coverage, b.quality.coverage, 0.01);
+}
+
+TEST(Input, InsideOutMeshIsTurned) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 3);
+  MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.4, 0.8, 0.9), 4);
+  vcg::tri::Clean<Mesh>::FlipMesh(target);
+  EXPECT_LT(SignedVolume(target), 0);
+  Mesh turned;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(turned, target);
+  std::vector<std::string> notes;
+  PrepareMesh(turned, "target", notes);
+  EXPECT_GT(SignedVolume(turned), 0);
+  EXPECT_TRUE(Says(notes, "faces of parts that pointed inward turned outward"));
+  Result result;
+  ASSERT_EQ(MapError(source, target, Small(), {}, &result), "");
+  EXPECT_GE(result.report.quality.coverage, 0.97);
+  EXPECT_TRUE(result.report.warnings.empty());
+}
+
+TEST(Input, ParametersOutOfRangeAreRefusedByName) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 2);
+  MakeSphere(target, Point3(0, 0, 0), 1.2, 2);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  struct Case { void (*set)(Options &, double); double value; const char *says; };
+  const Case cases[] = {
+      {[](Options &o, double x) { o.steps = int(x); }, 100000, "steps 100000 is out of range"},
+      {[](Options &o, double x) { o.steps = int(x); }, 0, "steps 0 is out of range"},
+      {[](Options &o, double x) { o.gridResolution = int(x); }, 2, "grid_resolution 2 is out of range"},
+      {[](Options &o, double x) { o.alpha = x; }, inf, "alpha inf is out of range"},
+      {[](Options &o, double x) { o.alpha = x; }, nan, "alpha nan is out of range"},
+      {[](Options &o, double x) { o.alpha = x; }, -1, "alpha -1 is out of range"},
+      {[](Options &o, double x) { o.holeRadius = x; }, 1e9, "hole_radius 1e+09 is out of range"},
+      {[](Options &o, double x) { o.holeRadius = x; }, inf, "hole_radius inf is out of range"},
+  };
+  for (const Case &c : cases) {
+    Options o;
+    c.set(o, c.value);
+    EXPECT_NE(MapError(source, target, o).find(c.says), std::string::npos) << c.says;
+  }
+}
+
+TEST(Input, AnchorsThatCannotBeInterpolatedAreRefused) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 3);
+  MakeSphere(target, Point3(0, 0, 0), 1, 3);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<AnchorPair> anchors = {{Point3(1, 0, 0), Point3(1, 0, 0), "east"},
+                                     {Point3(0, 1, 0), Point3(nan, 1, 0), "north"}};
+  EXPECT_NE(MapError(source, target, Small(), anchors).find("anchor 'north' has a NaN or infinite coordinate on the "
+                                                           "target"),
+            std::string::npos);
+  anchors[1] = {Point3(1, 0, 0), Point3(0, 1, 0), "twin"};
+  EXPECT_NE(MapError(source, target, Small(), anchors).find("anchors 'east' and 'twin' lie at the same point of the "
+                                                           "source"),
+            std::string::npos);
+}
+
+TEST(Input, MirroredAnchorsEndWithAWarning) {
+  Mesh source, target;
+  MakeEllipsoid(source, Point3(0, 0, 0), Point3(1.5, 0.8, 0.5), 4);
+  MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.5, 0.8, 0.5), 4);
+  // Points on the ellipsoid that span space; the target's with x negated: left and right swapped.
+  const Point3 dirs[] = {Point3(1, 0.2, 0.1), Point3(-0.3, 1, 0.2), Point3(0.2, -0.4, 1), Point3(0.5, 0.5, -0.7),
+                         Point3(-0.8, -0.3, -0.4)};
+  std::vector<AnchorPair> anchors;
+  for (const Point3 &d : dirs) {
+    const Point3 p(d.X() * 1.5, d.Y() * 0.8, d.Z() * 0.5);
+    const Point3 on = p / std::sqrt(vcg::SquaredNorm(Point3(p.X() / 1.5, p.Y() / 0.8, p.Z() / 0.5)));
+    anchors.push_back({on, Point3(-on.X(), on.Y(), on.Z()), "a" + std::to_string(anchors.size())});
+  }
+  Result result;
+  ASSERT_EQ(MapError(source, target, Small(), anchors, &result), "");
+  bool mirrored = false;
+  for (const std::string &w : result.report.warnings) mirrored |= w.find("the anchors mirror each other") == 0;
+  EXPECT_TRUE(mirrored) << result.report.ToText();
+  // The same anchors, not swapped: no such warning.
+  for (AnchorPair &a : anchors) a.target = a.source;
+  ASSERT_EQ(MapError(source, target, Small(), anchors, &result), "");
+  EXPECT_TRUE(result.report.warnings.empty()) << result.report.ToText();
+}
+
+TEST(Input, GridBeyondTheProcessMemoryIsRefusedBeforeAllocating) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 2);
+  MakeSphere(target, Point3(0, 0, 0), 1.2, 2);
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &saved), 0);
+  rlimit tight = saved;
+  tight.rlim_cur = std::size_t(3) << 30;  // 3 GiB of address space
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &tight), 0);
+  const std::size_t room = AvailableBytes();
+  Options o;
+  o.gridResolution = 400;  // 400^3 nodes: about 30 GiB
+  const std::string message = MapError(source, target, o);
+  setrlimit(RLIMIT_AS, &saved);
+  EXPECT_LT(room, std::size_t(3) << 30);
+  EXPECT_NE(message.find("grid_resolution 400: the grid would have"), std::string::npos) << message;
+  EXPECT_NE(message.find("lower grid_resolution"), std::string::npos);
+}
+
