@@ -13,6 +13,7 @@
 #include "tracker.h"
 #include "transfer.h"
 #include "untangle.h"
+#include "zero_set_topology.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -82,7 +83,11 @@ constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends withi
 
 // Warnings for a map whose own figures say it failed (Report::warnings): what to change.
 void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
-  auto percent = [](double x) { return std::to_string(int(std::lround(100 * x))) + "%"; };
+  auto percent = [](double x) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.1f%%", 100 * x);
+    return std::string(text);
+  };
   if (q.coverage < kLowCoverage)
     rep.warnings.push_back("the map reaches only " + percent(q.coverage) + " of the target (uncovered parts above): "
                            "give anchor pairs on the parts it misses, place the meshes closer (align centre-and-scale), "
@@ -96,6 +101,22 @@ void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
   if (!far.empty())
     rep.warnings.push_back("anchors " + far + " end more than " + std::to_string(int(kFarAnchorCells)) +
                            " cells from their partners: check that each name marks the same place on both meshes");
+  if (!rep.CutAsNeeded()) {
+    std::string events;  // the first few that change the tracked surface's topology
+    int listed = 0;
+    for (const TopologyEvent &e : rep.topologyEvents)
+      if (e.kind != TopologyEventKind::ComponentBorn && e.kind != TopologyEventKind::ComponentDied && listed++ < 5)
+        events += (events.empty() ? "" : "; ") + std::string(Name(e.kind)) + " at step " + std::to_string(e.step + 1);
+    rep.warnings.push_back("the cut source (" + std::to_string(rep.cutComponents) + " components, " +
+                           std::to_string(rep.cutBoundaryLoops) + " loops, Euler characteristic " +
+                           std::to_string(rep.cutEulerCharacteristic) + ") is not what a continuous map onto the "
+                           "target needs (" + std::to_string(rep.neededComponents) + ", " +
+                           std::to_string(rep.neededBoundaryLoops) + ", " +
+                           std::to_string(rep.neededEulerCharacteristic) + "), so the map folds or tears where the "
+                           "topology changed (" + (events.empty() ? std::string("no event found") : events) +
+                           "): raise grid_resolution so the parts that change are several cells wide, or give anchor "
+                           "pairs there");
+  }
   if (mirror.Mirrored())
     rep.warnings.push_back("the anchors mirror each other: the target's anchors fit the source's as a mirror image "
                            "(residual " + std::to_string(mirror.mirroredResidual) + ") far better than as they are (" +
@@ -208,12 +229,19 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   }
   gradient0 = VectorField();
   Tracker tracker(std::move(points), std::move(levels));
+  const Topology sourceTopology = MeasureTopology(source);
   Surgery surgery(source, options.holeRadius * grid.h, grid.h);  // surgery.h
 
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
   VectorField V, anchorMotion;
   ScalarField anchorWeight;
   const double dt = 1.0 / options.steps;
+  InsideSetTracker insideSet(fCur);  // the topology of {f(., t) < 0}, step by step (zero_set_topology.h)
+  auto frameTopology = [&](int step) {
+    const ZeroSetTopology t = insideSet.Topology();
+    return TopologyFrame{step, t.components, t.Handles(), t.cavities};
+  };
+  rep.topologyAlongMorph.push_back(frameTopology(-1));
   for (int k = 0; k < options.steps; ++k) {
     report(0.1 + 0.8 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
     t0 = Clock::now();
@@ -231,6 +259,13 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     rep.solverFigures.maxFinalResidual = std::max(rep.solverFigures.maxFinalResidual, s.residual);
     t0 = Clock::now();
     tracker.Advance(V, fNext, dt);  // DEF: Eq. 7
+    const std::vector<TopologyEvent> events = insideSet.Advance(fNext, k);  // where {f < 0} changes topology
+    if (!events.empty()) {
+      rep.topologyEvents.insert(rep.topologyEvents.end(), events.begin(), events.end());
+      const TopologyFrame now = frameTopology(k), &last = rep.topologyAlongMorph.back();
+      if (now.components != last.components || now.handles != last.handles || now.cavities != last.cavities)
+        rep.topologyAlongMorph.push_back(now);
+    }
     surgery.Step(k, V, fNext, dt, tracker.Points());  // saddles, cuts, refinement near them (surgery.h)
     rep.times.deform += Seconds(t0);
     std::swap(fCur, fNext);
@@ -321,6 +356,11 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;
   rep.cutEulerCharacteristic = topo.eulerCharacteristic;
+  const TopologyFrame &first = rep.topologyAlongMorph.front(), &last = rep.topologyAlongMorph.back();
+  const Topology needed = NeededCut(sourceTopology, last.components - first.components, last.handles - first.handles);
+  rep.neededComponents = needed.components;
+  rep.neededBoundaryLoops = needed.boundaryLoops;
+  rep.neededEulerCharacteristic = needed.eulerCharacteristic;
   rep.cutVertices = cut.vn;
   rep.cutFaces = cut.fn;
   WarnOnFailure(rep.quality, TestMirror(b, a), rep);

@@ -35,6 +35,24 @@ std::string Report::ToText() const {
               placement.c_str(), morphMode.c_str());
   o << Format("velocity solver: %s, %ld iterations in all, at most %d in a step, final residual at most %.2e\n",
               solver.c_str(), solverFigures.totalIterations, solverFigures.maxIterations, solverFigures.maxFinalResidual);
+  if (!topologyAlongMorph.empty()) {
+    auto describe = [](const TopologyFrame &t) {
+      return Format("%d part%s of genus %d%s", t.components, t.components == 1 ? "" : "s", t.handles,
+                    t.cavities ? Format(" with %d cavit%s", t.cavities, t.cavities == 1 ? "y" : "ies").c_str() : "");
+    };
+    o << "topology along the morph: " << describe(topologyAlongMorph.front());
+    for (std::size_t n = 1; n < topologyAlongMorph.size(); ++n)
+      o << " -> " << describe(topologyAlongMorph[n]) << Format(" (step %d)", topologyAlongMorph[n].step + 1);
+    o << "\n";
+  }
+  o << Format("topology events: %zu\n", topologyEvents.size());
+  constexpr std::size_t kListed = 12;
+  for (std::size_t n = 0; n < topologyEvents.size() && n < kListed; ++n) {
+    const TopologyEvent &e = topologyEvents[n];
+    o << Format("  step %d: %s at (%.4g, %.4g, %.4g)\n", e.step + 1, Name(e.kind), e.position.X(), e.position.Y(),
+                e.position.Z());
+  }
+  if (topologyEvents.size() > kListed) o << Format("  ... and %zu more\n", topologyEvents.size() - kListed);
   o << Format("saddles: %zu\n", saddles.size());
   for (std::size_t n = 0; n < saddles.size(); ++n) {
     const SaddleEvent &s = saddles[n];
@@ -49,6 +67,10 @@ std::string Report::ToText() const {
               "surgery), %d faces\n",
               cutComponents, cutComponents == 1 ? "" : "s", cutBoundaryLoops, cutBoundaryLoops == 1 ? "" : "s",
               cutEulerCharacteristic, cutVertices, pointsAdded, cutFaces);
+  o << Format("a continuous map onto the target needs a cut source of %d component%s, %d boundary loop%s, Euler "
+              "characteristic %d: %s\n",
+              neededComponents, neededComponents == 1 ? "" : "s", neededBoundaryLoops, neededBoundaryLoops == 1 ? "" : "s",
+              neededEulerCharacteristic, CutAsNeeded() ? "as built" : "NOT as built");
   o << Format("times (s): SDF %.3f, INT %.3f, VF %.3f, DEF %.3f, total %.3f (quality measures %.3f)\n", times.sdf,
               times.interp, times.velocity, times.deform, times.Total(), times.quality);
   o << Format("map quality: on-surface %.2f%%, coverage %.2f%%, flipped area %.2f%%, longest mapped edge %.2f cells, "

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesh.h"
+#include "zero_set_topology.h"
 
 #include <cmath>
 #include <string>
@@ -80,6 +81,13 @@ struct HoleEvent {
   double rimLength = 0;  // length of the boundary left, world units
 };
 
+// The topology of the inside set {f(., t) < 0} after a step where it changed
+// (zero_set_topology.h); step -1 is the source's own, f(., 0).
+struct TopologyFrame {
+  int step = -1;
+  int components = 0, handles = 0, cavities = 0;
+};
+
 struct Report {
   std::vector<std::string> repairs;   // what input.h repaired on the private copies
   std::vector<std::string> warnings;  // the map's own figures say it failed somewhere: what to change
@@ -96,6 +104,9 @@ struct Report {
   SolverFigures solverFigures;
   StageTimes times;
   MapQuality quality;
+  int neededComponents = 0, neededBoundaryLoops = 0, neededEulerCharacteristic = 0;  // topology.h, NeededCut
+  std::vector<TopologyFrame> topologyAlongMorph;  // f(., 0), then each frame where it changed
+  std::vector<TopologyEvent> topologyEvents;     // every event, exact from f (zero_set_topology.h)
   std::vector<SaddleEvent> saddles;
   std::vector<HoleEvent> holes;
   int untangledVertices = 0;  // vertices moved by untangle.h
@@ -109,6 +120,10 @@ struct Report {
   long peakMemoryKiB = 0;   // peak resident set size of the process, if known
 
   // Multi-line text for the log, the tests and the benchmark.
+  bool CutAsNeeded() const {
+    return cutComponents == neededComponents && cutBoundaryLoops == neededBoundaryLoops &&
+           cutEulerCharacteristic == neededEulerCharacteristic;
+  }
   std::string ToText() const;
 };
 

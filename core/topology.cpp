@@ -3,6 +3,9 @@
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <algorithm>
+#include <cstdlib>
+
 namespace eulermap {
 
 Topology MeasureTopology(Mesh &m) {
@@ -21,6 +24,14 @@ Topology MeasureTopology(Mesh &m) {
     }
   const int vertices = int(std::count(used.begin(), used.end(), true));
   t.eulerCharacteristic = vertices - edges + faces;
+  return t;
+}
+
+Topology NeededCut(const Topology &source, int componentChange, int handleChange) {
+  Topology t = source;
+  t.components += std::max(0, componentChange);
+  t.boundaryLoops += 2 * std::abs(handleChange) + 2 * std::abs(componentChange);
+  t.eulerCharacteristic -= 2 * std::max(0, handleChange) + 2 * std::max(0, -componentChange);
   return t;
 }
 

@@ -18,4 +18,13 @@ struct Topology {
 // Updates m's face-face topology.
 Topology MeasureTopology(Mesh &m);
 
+// The cut source a continuous map needs (DESIGN.md: expected topology after surgery), from
+// the source's own topology and the changes of the inside set's components and handles
+// from f(., 0) to f(., 1) (zero_set_topology.h). Each handle gained costs two discs (two
+// loops, chi - 2), each lost a band around it (two loops, chi kept), each merge of two parts
+// a disc on each (two loops, chi - 2), each split a band around the neck (one more
+// component, two loops, chi kept): sphere -> genus g: genus 0 with 2g loops; genus g ->
+// sphere: genus 0 with 2g loops; two spheres -> one: two discs.
+Topology NeededCut(const Topology &source, int componentChange, int handleChange);
+
 } // namespace eulermap
