@@ -4,6 +4,7 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -79,7 +80,57 @@ std::vector<int> FaceParts(const Mesh &mesh, int &parts) {
   return part;
 }
 
-// Step 6 of PrepareMesh: parts whose signed volume (1/6 sum of p0 . (p1 x p2), about the
+// Step 6 of PrepareMesh, first half: within each part, faces turned to agree with the
+// neighbour they were reached from across a manifold edge (an edge of exactly two faces),
+// breadth first from the part's first face; returns the faces turned. Faces that disagree
+// with their neighbours make the winding number cancel (every other face turned over reads
+// as no inside at all).
+int OrientCoherently(Mesh &mesh) {
+  std::map<std::pair<const Vertex *, const Vertex *>, std::vector<int>> edgeFaces;  // undirected edge -> faces
+  auto edge = [](const Face &f, int e) {
+    const Vertex *a = f.cV(e), *b = f.cV((e + 1) % 3);
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
+  for (std::size_t n = 0; n < mesh.face.size(); ++n)
+    if (!mesh.face[n].IsD())
+      for (int e = 0; e < 3; ++e) edgeFaces[edge(mesh.face[n], e)].push_back(int(n));
+  // Whether faces f and g use their shared edge in the same direction (then they disagree).
+  auto sameDirection = [&](const Face &f, const Face &g, const std::pair<const Vertex *, const Vertex *> &ab) {
+    auto from = [&](const Face &h) {
+      for (int e = 0; e < 3; ++e)
+        if (edge(h, e) == ab) return static_cast<const Vertex *>(h.cV(e));
+      return static_cast<const Vertex *>(nullptr);
+    };
+    return from(f) == from(g);
+  };
+  std::vector<char> seen(mesh.face.size(), 0);
+  int turned = 0;
+  for (std::size_t start = 0; start < mesh.face.size(); ++start) {
+    if (mesh.face[start].IsD() || seen[start]) continue;
+    std::vector<int> queue{int(start)};
+    seen[start] = 1;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      Face &f = mesh.face[queue[q]];
+      for (int e = 0; e < 3; ++e) {
+        const auto ab = edge(f, e);
+        const std::vector<int> &faces = edgeFaces[ab];
+        if (faces.size() != 2) continue;
+        const int g = faces[0] == queue[q] ? faces[1] : faces[0];
+        if (seen[g]) continue;
+        seen[g] = 1;
+        if (sameDirection(f, mesh.face[g], ab)) {
+          std::swap(mesh.face[g].V(1), mesh.face[g].V(2));
+          std::swap(mesh.face[g].WT(1), mesh.face[g].WT(2));
+          ++turned;
+        }
+        queue.push_back(g);
+      }
+    }
+  }
+  return turned;
+}
+
+// Step 6 of PrepareMesh, second half: parts whose signed volume (1/6 sum of p0 . (p1 x p2), about the
 // part's centroid) is negative have every face turned; returns the faces turned.
 int OrientOutward(Mesh &mesh) {
   int parts = 0;
@@ -134,11 +185,19 @@ void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &
   const double diag = mesh.bbox.Diag();
   if (!(diag > 0)) throw Error("the " + role + " mesh has no extent: all its vertices lie at one point");
 
-  // 4.
-  const double minDoubleArea = 1e-12 * diag * diag;
+  // 4. A face's height over its longest edge, 2 area / longest edge, below kFlatHeight of the
+  // diagonal: below what single-precision coordinates resolve (MeshLab 2020.09 and STL files
+  // store floats; a face on three collinear points rounded to floats has a height of 1e-9
+  // to 1e-8 of the diagonal, a sound face of a 10^6-face scan one of 1e-4 or so).
+  constexpr double kFlatHeight = 1e-6;
   int zeroArea = 0;
   const int orphans = RemoveFacesWhere(
-      mesh, [&](const Face &f) { return ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() <= minDoubleArea; },
+      mesh,
+      [&](const Face &f) {
+        const double longest = std::max({vcg::Distance(f.cP(0), f.cP(1)), vcg::Distance(f.cP(1), f.cP(2)),
+                                          vcg::Distance(f.cP(2), f.cP(0))});
+        return ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() <= kFlatHeight * diag * longest;
+      },
       zeroArea);
   if (mesh.fn == 0)
     throw Error("every face of the " + role + " mesh has zero area (its vertices lie on lines or points): the " +
@@ -158,6 +217,7 @@ void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &
   }
 
   // 6.
+  Note(notes, role, OrientCoherently(mesh), "faces turned to agree with their neighbours");
   Note(notes, role, OrientOutward(mesh), "faces of parts that pointed inward turned outward");
 
   if (std::size_t(mesh.vn) != mesh.vert.size() || std::size_t(mesh.fn) != mesh.face.size())

@@ -269,3 +269,24 @@ TEST(Input, GridBeyondTheProcessMemoryIsRefusedBeforeAllocating) {
   EXPECT_NE(message.find("lower grid_resolution"), std::string::npos);
 }
 
+
+TEST(Input, FacesThatDisagreeWithTheirNeighboursAreTurned) {
+  Mesh sphere, mixed;
+  MakeSphere(sphere, Point3(0, 0, 0), 1, 3);
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(mixed, sphere);
+  for (std::size_t n = 0; n < mixed.face.size(); n += 2) std::swap(mixed.face[n].V(1), mixed.face[n].V(2));
+  EXPECT_LT(std::abs(SignedVolume(mixed)), 0.5 * SignedVolume(sphere));
+  std::vector<std::string> notes;
+  PrepareMesh(mixed, "source", notes);
+  EXPECT_NEAR(SignedVolume(mixed), SignedVolume(sphere), 1e-9);
+  EXPECT_TRUE(Says(notes, "faces turned to agree with their neighbours"));
+  Mesh target;
+  MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.3, 0.8, 0.9), 4);
+  Mesh mixedAgain;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(mixedAgain, sphere);
+  for (std::size_t n = 0; n < mixedAgain.face.size(); n += 2)
+    std::swap(mixedAgain.face[n].V(1), mixedAgain.face[n].V(2));
+  Result result;
+  ASSERT_EQ(MapError(mixedAgain, target, Small(), {}, &result), "");
+  EXPECT_GE(result.report.quality.coverage, 0.97);
+}
