@@ -208,7 +208,7 @@ void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &
 
   // 5.
   const int welded = Weld(mesh);
-  Note(notes, role, welded, "vertices at the same place as another welded (a triangle soup, as STL stores meshes)");
+  Note(notes, role, welded, "vertices at the same place as another welded");
   if (welded > 0) {
     int degenerate = 0;
     RemoveFacesWhere(mesh, [](const Face &f) { return f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0); },

@@ -82,6 +82,12 @@ constexpr double kLowOnSurface = 0.9;
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
 
+std::string Short(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
 // Warnings for a map whose own figures say it failed (Report::warnings): what to change.
 void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
   auto percent = [](double x) {
@@ -104,7 +110,7 @@ void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
                            " cells from their partners (" + std::to_string(kFarTipAnchorCells).substr(0, 3) +
                            " on a tip the grid cuts short): check that each name marks the same place on both "
                            "meshes");
-  if (!rep.CutAsNeeded()) {
+  if (rep.cutPredicted && !rep.CutAsNeeded()) {
     std::string events;  // the first few that change the tracked surface's topology
     int listed = 0;
     for (const TopologyEvent &e : rep.topologyEvents)
@@ -122,8 +128,8 @@ void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
   }
   if (mirror.Mirrored())
     rep.warnings.push_back("the anchors mirror each other: the target's anchors fit the source's as a mirror image "
-                           "(residual " + std::to_string(mirror.mirroredResidual) + ") far better than as they are (" +
-                           std::to_string(mirror.residual) + "); left and right may be swapped in one of the "
+                           "(RMS residual " + Short(mirror.mirroredResidual) + ") far better than as they are (" +
+                           Short(mirror.residual) + "); left and right may be swapped in one of the "
                            "picked-points files");
 }
 
@@ -359,11 +365,16 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;
   rep.cutEulerCharacteristic = topo.eulerCharacteristic;
+  // The prediction holds where the source's surface is the boundary of f0's inside set: not
+  // for self-intersecting parts, shells inside shells, parts thinner than a cell.
   const TopologyFrame &first = rep.topologyAlongMorph.front(), &last = rep.topologyAlongMorph.back();
-  const Topology needed = NeededCut(sourceTopology, last.components - first.components, last.handles - first.handles);
-  rep.neededComponents = needed.components;
-  rep.neededBoundaryLoops = needed.boundaryLoops;
-  rep.neededEulerCharacteristic = needed.eulerCharacteristic;
+  rep.cutPredicted = sourceTopology.components == first.components && sourceTopology.Genus() == first.handles;
+  if (rep.cutPredicted) {
+    const Topology needed = NeededCut(sourceTopology, last.components - first.components, last.handles - first.handles);
+    rep.neededComponents = needed.components;
+    rep.neededBoundaryLoops = needed.boundaryLoops;
+    rep.neededEulerCharacteristic = needed.eulerCharacteristic;
+  }
   rep.cutVertices = cut.vn;
   rep.cutFaces = cut.fn;
   WarnOnFailure(rep.quality, TestMirror(b, a), rep);

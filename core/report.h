@@ -104,7 +104,10 @@ struct Report {
   SolverFigures solverFigures;
   StageTimes times;
   MapQuality quality;
-  int neededComponents = 0, neededBoundaryLoops = 0, neededEulerCharacteristic = 0;  // topology.h, NeededCut
+  // The cut a continuous map needs (topology.h, NeededCut), when the source mesh's topology is
+  // that of f0's inside set (cutPredicted).
+  bool cutPredicted = false;
+  int neededComponents = 0, neededBoundaryLoops = 0, neededEulerCharacteristic = 0;
   std::vector<TopologyFrame> topologyAlongMorph;  // f(., 0), then each frame where it changed
   std::vector<TopologyEvent> topologyEvents;     // every event, exact from f (zero_set_topology.h)
   std::vector<SaddleEvent> saddles;
