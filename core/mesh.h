@@ -36,7 +36,14 @@ class Vertex : public vcg::Vertex<UsedTypes, vcg::vertex::Coord3d, vcg::vertex::
 class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::BitFlags,
                               ZeroWedgeTexCoord2d, vcg::face::FFAdj, vcg::face::VFAdj, vcg::face::Mark> {};
 
-class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
+class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {
+ public:
+  // vcglib's ~TriMesh (2020.09 and 2025.07) leaves ClearAttributes() commented out, so
+  // every attribute added with Allocator<Mesh>::Add/GetPer*Attribute (e.g. the cut's
+  // TargetPosition) would leak. ClearAttributes deletes each one and empties the sets;
+  // Clear() does not touch attributes and TriMesh cannot be copied, so none is freed twice.
+  ~Mesh() { ClearAttributes(); }
+};
 
 using Point3 = vcg::Point3d;
 using Box3 = vcg::Box3d;

@@ -36,11 +36,13 @@ Box3 VertexBox(const Mesh &m) {
 
 // Principal direction of the centred columns of `x` (3 x n) and its singular values.
 //   x:      points as columns, already centred
-//   sigma:  out, singular values (descending)
+//   sigma:  out, singular values (descending); min(3, n) of them, the rest 0
 //   returns the unit direction of largest spread
 Eigen::Vector3d PrincipalDirection(const Eigen::Matrix3Xd &x, Eigen::Vector3d &sigma) {
   Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(x, Eigen::ComputeFullU);
-  sigma = svd.singularValues();
+  const auto &values = svd.singularValues();  // min(3, n) entries: 2 for two anchors
+  sigma.setZero();
+  sigma.head(values.size()) = values;
   return svd.matrixU().col(0);
 }
 

@@ -12,7 +12,8 @@ want="$1"; dest="$2"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 state="$dest/apt-state"
 mkdir -p "$state/lists/partial" "$state/cache/archives/partial"
-find_tree() { find "$dest" -maxdepth 1 -type d -name "meshlab-${want%%-*}*" | head -n 1; }
+# -H: DEST_DIR may be a symbolic link (a git worktree sharing another checkout's .deps).
+find_tree() { find -H "$dest" -maxdepth 1 -type d -name "meshlab-${want%%-*}*" | head -n 1; }
 unpacked="$(find_tree)"
 if [ -n "$unpacked" ] && [ -f "$unpacked/.eulermap-complete" ]; then
   echo "$unpacked"; exit 0

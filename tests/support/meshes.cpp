@@ -142,7 +142,14 @@ Point3 Bend(const Point3 &p, const Box3 &box, double strength) {
 
 void MakeDoubleTorus(Mesh &m, double r, int cells) {
   using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<float>>;
-  using Walker = vcg::tri::TrivialWalker<Mesh, Volume>;
+  // vcglib 2020.09's TrivialWalker allocates its five slice buffers in SetExtractionBox
+  // (new[]) and has no destructor; this one frees them (NextYSlice only swaps them).
+  struct Walker : vcg::tri::TrivialWalker<Mesh, Volume> {
+    Walker() { _x_cs = _y_cs = _z_cs = _x_ns = _z_ns = nullptr; }
+    ~Walker() {
+      for (int *buffer : {_x_cs, _y_cs, _z_cs, _x_ns, _z_ns}) delete[] buffer;
+    }
+  };
   using Cubes = vcg::tri::MarchingCubes<Mesh, Walker>;
   const Box3 box(Point3(-1.2, -0.8, -0.4), Point3(1.2, 0.8, 0.4));
   const double h = box.DimX() / cells;
