@@ -79,6 +79,7 @@ void RequireInside(const ScalarField &f, const char *role) {
 // shapes covers 96-100% of its target and brings 98-100% of its points onto it.
 constexpr double kLowCoverage = 0.9;
 constexpr double kLowOnSurface = 0.9;
+constexpr double kFullCoverage = 0.97;  // below it, parts born from nothing are named
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
 
@@ -88,8 +89,8 @@ std::string Short(double x) {
   return text;
 }
 
-// Warnings for a map whose own figures say it failed (Report::warnings): what to change.
-void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
+// Warnings for a map whose own figures say it failed (toTarget: the placed frame to the target's) (Report::warnings): what to change.
+void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, const Similarity &toTarget, Report &rep) {
   auto percent = [](double x) {
     char text[16];
     std::snprintf(text, sizeof text, "%.1f%%", 100 * x);
@@ -116,16 +117,36 @@ void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, Report &rep) {
     for (const TopologyEvent &e : rep.topologyEvents)
       if (e.kind != TopologyEventKind::ComponentBorn && e.kind != TopologyEventKind::ComponentDied && listed++ < 5)
         events += (events.empty() ? "" : "; ") + std::string(Name(e.kind)) + " at step " + std::to_string(e.step + 1);
-    rep.warnings.push_back("the cut source (" + std::to_string(rep.cutComponents) + " components, " +
-                           std::to_string(rep.cutBoundaryLoops) + " loops, Euler characteristic " +
-                           std::to_string(rep.cutEulerCharacteristic) + ") is not what a continuous map onto the "
-                           "target needs (" + std::to_string(rep.neededComponents) + ", " +
-                           std::to_string(rep.neededBoundaryLoops) + ", " +
-                           std::to_string(rep.neededEulerCharacteristic) + "), so the map folds or tears where the "
-                           "topology changed (" + (events.empty() ? std::string("no event found") : events) +
+    auto figures = [](int components, int loops, int chi) {
+      return std::to_string(components) + (components == 1 ? " component, " : " components, ") +
+             std::to_string(loops) + (loops == 1 ? " loop, " : " loops, ") + "Euler characteristic " +
+             std::to_string(chi);
+    };
+    rep.warnings.push_back("the cut source (" + figures(rep.cutComponents, rep.cutBoundaryLoops,
+                                                        rep.cutEulerCharacteristic) +
+                           ") is not what a continuous map onto the target needs (" +
+                           figures(rep.neededComponents, rep.neededBoundaryLoops, rep.neededEulerCharacteristic) +
+                           "), so the map folds or tears where the topology changed (" +
+                           (events.empty() ? std::string("no event found") : events) +
                            "): raise grid_resolution so the parts that change are several cells wide, or give anchor "
                            "pairs there");
   }
+  // Parts born from nothing (a minimum of f crossing zero): no tracked point reaches them
+  // unless the surface grows into them. Places in the target's own frame, the first few.
+  std::string born;
+  int births = 0;
+  for (const TopologyEvent &e : rep.topologyEvents)
+    if (e.kind == TopologyEventKind::ComponentBorn && births++ < 4) {
+      const Point3 p = toTarget.Apply(e.position);
+      born += (born.empty() ? "" : "; ") + std::string("step ") + std::to_string(e.step + 1) + " around (" +
+              Short(p.X()) + ", " + Short(p.Y()) + ", " + Short(p.Z()) + ")";
+    }
+  if (births > 0 && q.coverage < kFullCoverage)
+    rep.warnings.push_back("parts of the target grow from nothing in the morph (" + std::to_string(births) +
+                           (births == 1 ? " birth: " : " births: ") + born + (births > 4 ? "; ..." : "") +
+                           ", the target's frame), "
+                           "where no source point reaches unless the surface grows into them: give anchor pairs on "
+                           "them, or place the source so that it overlaps them");
   if (mirror.Mirrored())
     rep.warnings.push_back("the anchors mirror each other: the target's anchors fit the source's as a mirror image "
                            "(RMS residual " + Short(mirror.mirroredResidual) + ") far better than as they are (" +
@@ -377,7 +398,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   }
   rep.cutVertices = cut.vn;
   rep.cutFaces = cut.fn;
-  WarnOnFailure(rep.quality, TestMirror(b, a), rep);
+  WarnOnFailure(rep.quality, TestMirror(b, a), back, rep);
   rep.times.quality = Seconds(t0);
   rep.peakMemoryKiB = PeakMemoryKiB();
   report(1.0, "done");
