@@ -386,10 +386,23 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;
   rep.cutEulerCharacteristic = topo.eulerCharacteristic;
-  // The prediction holds where the source's surface is the boundary of f0's inside set: not
-  // for self-intersecting parts, shells inside shells, parts thinner than a cell.
+  // The prediction holds where each mesh's surface is the boundary of its field's inside set
+  // (f0's, f1's): not for self-intersecting parts, shells inside shells, or parts the grid
+  // breaks or merges (thinner than about two cells: the cow's legs at 64 cells).
   const TopologyFrame &first = rep.topologyAlongMorph.front(), &last = rep.topologyAlongMorph.back();
-  rep.cutPredicted = sourceTopology.components == first.components && sourceTopology.Genus() == first.handles;
+  const Topology targetTopology = MeasureTopology(placed);
+  auto shape = [](int parts, int genus) {
+    return std::to_string(parts) + (parts == 1 ? " part" : " parts") + " of genus " + std::to_string(genus);
+  };
+  if (sourceTopology.components != first.components || sourceTopology.Genus() != first.handles)
+    rep.cutNotChecked = "the source mesh (" + shape(sourceTopology.components, sourceTopology.Genus()) +
+                        ") is not the boundary of its inside at this grid (" + shape(first.components, first.handles) +
+                        "): self-intersecting parts, shells inside shells, or parts thinner than about two cells";
+  else if (targetTopology.components != last.components || targetTopology.Genus() != last.handles)
+    rep.cutNotChecked = "the target at this grid (" + shape(last.components, last.handles) + ") is not the target "
+                        "mesh (" + shape(targetTopology.components, targetTopology.Genus()) + "): parts thinner than "
+                        "about two cells break apart or merge; raise grid_resolution for them";
+  rep.cutPredicted = rep.cutNotChecked.empty();
   if (rep.cutPredicted) {
     const Topology needed = NeededCut(sourceTopology, last.components - first.components, last.handles - first.handles);
     rep.neededComponents = needed.components;

@@ -72,9 +72,8 @@ std::string Report::ToText() const {
                 "characteristic %d: %s\n",
                 neededComponents, neededComponents == 1 ? "" : "s", neededBoundaryLoops,
                 neededBoundaryLoops == 1 ? "" : "s", neededEulerCharacteristic, CutAsNeeded() ? "as built" : "NOT as built");
-  else if (!topologyAlongMorph.empty())
-    o << "the cut is not checked against a prediction: the source mesh's own components or genus differ from its "
-         "inside at this grid (self-intersecting parts, shells inside shells, or parts thinner than a cell)\n";
+  else if (!cutNotChecked.empty())
+    o << "the cut is not checked against a prediction: " << cutNotChecked << "\n";
   o << Format("times (s): SDF %.3f, INT %.3f, VF %.3f, DEF %.3f, total %.3f (quality measures %.3f)\n", times.sdf,
               times.interp, times.velocity, times.deform, times.Total(), times.quality);
   o << Format("map quality: on-surface %.2f%%, coverage %.2f%%, flipped area %.2f%%, longest mapped edge %.2f cells, "

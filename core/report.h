@@ -107,6 +107,7 @@ struct Report {
   // The cut a continuous map needs (topology.h, NeededCut), when the source mesh's topology is
   // that of f0's inside set (cutPredicted).
   bool cutPredicted = false;
+  std::string cutNotChecked;  // why not, when it is not
   int neededComponents = 0, neededBoundaryLoops = 0, neededEulerCharacteristic = 0;
   std::vector<TopologyFrame> topologyAlongMorph;  // f(., 0), then each frame where it changed
   std::vector<TopologyEvent> topologyEvents;     // every event, exact from f (zero_set_topology.h)
