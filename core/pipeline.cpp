@@ -400,8 +400,9 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
                         "): self-intersecting parts, shells inside shells, or parts thinner than about two cells";
   else if (targetTopology.components != last.components || targetTopology.Genus() != last.handles)
     rep.cutNotChecked = "the target at this grid (" + shape(last.components, last.handles) + ") is not the target "
-                        "mesh (" + shape(targetTopology.components, targetTopology.Genus()) + "): parts thinner than "
-                        "about two cells break apart or merge; raise grid_resolution for them";
+                        "mesh (" + shape(targetTopology.components, targetTopology.Genus()) + "): parts that intersect "
+                        "each other, or parts thinner than about two cells that the grid breaks apart or merges "
+                        "(raise grid_resolution for those)";
   rep.cutPredicted = rep.cutNotChecked.empty();
   if (rep.cutPredicted) {
     const Topology needed = NeededCut(sourceTopology, last.components - first.components, last.handles - first.handles);
