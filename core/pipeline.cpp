@@ -89,7 +89,8 @@ std::string Short(double x) {
   return text;
 }
 
-// Warnings for a map whose own figures say it failed (toTarget: the placed frame to the target's) (Report::warnings): what to change.
+// Report::warnings: what to change, for a map whose own figures say it failed. toTarget takes
+// the placed frame (where the events lie) to the target's own.
 void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, const Similarity &toTarget, Report &rep) {
   auto percent = [](double x) {
     char text[16];
@@ -108,7 +109,7 @@ void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, const Similari
     if (a.error > (a.Resolved() ? kFarAnchorCells : kFarTipAnchorCells)) far += (far.empty() ? "" : ", ") + a.name;
   if (!far.empty())
     rep.warnings.push_back("anchors " + far + " end more than " + std::to_string(int(kFarAnchorCells)) +
-                           " cells from their partners (" + std::to_string(kFarTipAnchorCells).substr(0, 3) +
+                           " cells from their partners (" + Short(kFarTipAnchorCells) +
                            " on a tip the grid cuts short): check that each name marks the same place on both "
                            "meshes");
   if (rep.cutPredicted && !rep.CutAsNeeded()) {

@@ -40,9 +40,17 @@ std::string Report::ToText() const {
       return Format("%d part%s of genus %d%s", t.components, t.components == 1 ? "" : "s", t.handles,
                     t.cavities ? Format(" with %d cavit%s", t.cavities, t.cavities == 1 ? "y" : "ies").c_str() : "");
     };
+    // Noisy scans change it at many steps: the first changes and the last frame are shown.
+    constexpr std::size_t kShown = 8;
+    const std::size_t count = topologyAlongMorph.size();
     o << "topology along the morph: " << describe(topologyAlongMorph.front());
-    for (std::size_t n = 1; n < topologyAlongMorph.size(); ++n)
+    for (std::size_t n = 1; n < count; ++n) {
+      if (n == kShown && count > kShown + 1) {
+        o << Format(" -> ... (%zu more changes)", count - kShown - 1);
+        n = count - 1;
+      }
       o << " -> " << describe(topologyAlongMorph[n]) << Format(" (step %d)", topologyAlongMorph[n].step + 1);
+    }
     o << "\n";
   }
   o << Format("topology events: %zu\n", topologyEvents.size());
