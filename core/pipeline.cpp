@@ -7,6 +7,7 @@
 #include "memory.h"
 #include "morph.h"
 #include "quality.h"
+#include "saddle.h"
 #include "sdf.h"
 #include "surgery.h"
 #include "topology.h"
@@ -22,6 +23,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -290,14 +292,19 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     rep.solverFigures.maxFinalResidual = std::max(rep.solverFigures.maxFinalResidual, s.residual);
     t0 = Clock::now();
     tracker.Advance(V, fNext, dt);  // DEF: Eq. 7
-    const std::vector<TopologyEvent> events = insideSet.Advance(fNext, k);  // where {f < 0} changes topology
+    surgery.AdvanceAddedPoints(V, fNext, dt);
+    // Topology events: where {f < 0} changes between the frames, exact from f (zero_set_topology.h).
+    const std::vector<TopologyEvent> events = insideSet.Advance(fNext, k);
     if (!events.empty()) {
       rep.topologyEvents.insert(rep.topologyEvents.end(), events.begin(), events.end());
       const TopologyFrame now = frameTopology(k), &last = rep.topologyAlongMorph.back();
       if (now.components != last.components || now.handles != last.handles || now.cavities != last.cavities)
         rep.topologyAlongMorph.push_back(now);
     }
-    surgery.Step(k, V, fNext, dt, tracker.Points());  // saddles, cuts, refinement near them (surgery.h)
+    // Surgery at the events the tracked surface takes part in (surgery.h); V_k's saddles
+    // only orient the cuts (cut_axis.h).
+    const bool cuts = std::any_of(events.begin(), events.end(), [](const TopologyEvent &e) { return ShapeOf(e.kind) != CutShape::None; });
+    surgery.Step(events, cuts ? FindSaddles(V) : std::vector<Saddle>(), fNext, tracker.Points());
     rep.times.deform += Seconds(t0);
     std::swap(fCur, fNext);
   }
@@ -315,12 +322,11 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   const std::vector<Point3> &tracked = tracker.Points();
   // The cut source (surgery.h), and the images of its vertices.
   Mesh &cut = result.cut;
-  const std::vector<Point3> images = surgery.Build(source, tracked, cut, rep.holes);
+  const std::vector<Point3> images = surgery.Build(source, tracked, cut, rep.surgery);
   if (cut.fn == 0)
-    throw Error("surgery removed every face of the source (" + std::to_string(rep.holes.size()) +
+    throw Error("surgery removed every face of the source (" + std::to_string(rep.HolesCut()) +
                 " holes cut): lower hole_radius, or raise grid_resolution so the parts that change are several "
                 "cells wide");
-  rep.saddles = surgery.Saddles();
   rep.pointsAdded = surgery.PointsAdded();
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
   std::vector<ClosestHit> hits(images.size());

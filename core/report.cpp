@@ -26,6 +26,12 @@ double MapQuality::ResolvedAnchorErrorCells() const {
   return worst;
 }
 
+int Report::HolesCut() const {
+  int n = 0;
+  for (const EventSurgery &s : surgery) n += s.outcome == EventCut::Cut || s.outcome == EventCut::Collapsed;
+  return n;
+}
+
 std::string Report::ToText() const {
   std::ostringstream o;
   for (const std::string &r : repairs) o << "repaired: " << r << "\n";
@@ -53,24 +59,29 @@ std::string Report::ToText() const {
     }
     o << "\n";
   }
-  o << Format("topology events: %zu\n", topologyEvents.size());
-  constexpr std::size_t kListed = 12;
+  o << Format("topology events: %zu, %d cut\n", topologyEvents.size(), HolesCut());
+  constexpr std::size_t kListed = 40;
   for (std::size_t n = 0; n < topologyEvents.size() && n < kListed; ++n) {
     const TopologyEvent &e = topologyEvents[n];
-    o << Format("  step %d: %s at (%.4g, %.4g, %.4g)\n", e.step + 1, Name(e.kind), e.position.X(), e.position.Y(),
+    o << Format("  step %d: %s at (%.4g, %.4g, %.4g)", e.step + 1, Name(e.kind), e.position.X(), e.position.Y(),
                 e.position.Z());
+    if (n < surgery.size()) {
+      const EventSurgery &s = surgery[n];
+      if (s.outcome == EventCut::Cut)
+        o << Format(": cut (axis from %s), %d faces removed, rim length %.4g", s.axisFromSaddle ? "a saddle of V" : "f's Hessian",
+                    s.facesRemoved, s.rimLength);
+      else if (s.outcome == EventCut::AwayFromSurface)
+        o << Format(": not cut, the tracked surface is %.1f cells away (a part no tracked point reaches)", s.distanceCells);
+      else if (s.outcome == EventCut::Cancelled)
+        o << ": not cut, a handle gained and one lost together cancel";
+      else if (s.outcome == EventCut::Collapsed)
+        o << Format(": the piece of the tracked surface that shrank with it removed, %d faces", s.facesRemoved);
+      else if (s.outcome == EventCut::OneSheetTracked)
+        o << ": not cut, only one of the sheets meeting is tracked (a part no tracked point reaches)";
+    }
+    o << "\n";
   }
   if (topologyEvents.size() > kListed) o << Format("  ... and %zu more\n", topologyEvents.size() - kListed);
-  o << Format("saddles: %zu\n", saddles.size());
-  for (std::size_t n = 0; n < saddles.size(); ++n) {
-    const SaddleEvent &s = saddles[n];
-    o << Format("  saddle %zu: step %d at (%.4g, %.4g, %.4g), %d expanding direction%s, %s\n", n, s.step,
-                s.position.X(), s.position.Y(), s.position.Z(), s.expandingDirections,
-                s.expandingDirections == 1 ? "" : "s", s.cut ? "cut" : "not cut (away from the surface)");
-  }
-  o << Format("holes cut: %zu\n", holes.size());
-  for (const HoleEvent &h : holes)
-    o << Format("  hole at saddle %d: %d faces removed, rim length %.4g\n", h.saddle, h.facesRemoved, h.rimLength);
   o << Format("cut source: %d component%s, %d boundary loop%s, Euler characteristic %d; %d vertices (%d added by "
               "surgery), %d faces\n",
               cutComponents, cutComponents == 1 ? "" : "s", cutBoundaryLoops, cutBoundaryLoops == 1 ? "" : "s",

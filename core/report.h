@@ -1,4 +1,4 @@
-// eulermap::Report — every number users read (timings, solver figures, saddles, holes,
+// eulermap::Report — every number users read (timings, solver figures, topology events and their cuts,
 // map quality) in one type, printed the same way by the MeshLab log, the tests and
 // the benchmark (DESIGN.md: style).
 #pragma once
@@ -17,7 +17,7 @@ struct StageTimes {
   double sdf = 0;     // SDF: f0, f1 on the grid
   double interp = 0;  // INT: morph frames f(., t_k), anchor interpolation, warps
   double velocity = 0;  // VF: velocity fields V_k
-  double deform = 0;  // DEF: advection and pull-back of the tracked points, saddles, surgery
+  double deform = 0;  // DEF: advection and pull-back of the tracked points, topology events, surgery
   double quality = 0;   // measuring the map (not in the paper's table)
   double Total() const { return sdf + interp + velocity + deform; }
 };
@@ -68,17 +68,22 @@ struct MapQuality {
   double meanDistortion = 0;    // mean per-vertex distortion (vertex quality of the cut layer)
 };
 
-struct SaddleEvent {
-  int step = 0;
-  Point3 position;          // world coordinates (the placed target's frame)
-  int expandingDirections = 0;  // 1 or 2 positive real parts of the Jacobian's eigenvalues
-  bool cut = false;         // its sphere met the tracked surface
+// What surgery did at one topology event (surgery.h, cut_axis.h).
+enum class EventCut {
+  Cut,              // the tracked surface was cut there
+  NotACutKind,      // a part or cavity born or dying, a cavity opening: no sheet meets or parts
+  AwayFromSurface,  // no tracked triangle within 6 cells + the hole radius (an untracked part's event)
+  Cancelled,        // a handle gained and one lost at one step and place: no change
+  Collapsed,        // a part dying: the piece of the tracked surface that shrank with it was removed
+  OneSheetTracked,  // sheets meet, but one side has no tracked face (a part grown from nothing merging)
 };
-
-struct HoleEvent {
-  int saddle = 0;        // index into Report::saddles
-  int facesRemoved = 0;
-  double rimLength = 0;  // length of the boundary left, world units
+struct EventSurgery {
+  int event = 0;              // index into Report::topologyEvents
+  EventCut outcome = EventCut::NotACutKind;
+  double distanceCells = 0;   // from the event to the nearest tracked triangle, in cells (cut kinds only)
+  bool axisFromSaddle = false;  // the cut's axis came from a saddle of V (else from f's Hessian)
+  int facesRemoved = 0;       // faces of the tracked surface removed (Cut only)
+  double rimLength = 0;       // length of the boundary left, world units (Cut only)
 };
 
 // The topology of the inside set {f(., t) < 0} after a step where it changed
@@ -111,8 +116,7 @@ struct Report {
   int neededComponents = 0, neededBoundaryLoops = 0, neededEulerCharacteristic = 0;
   std::vector<TopologyFrame> topologyAlongMorph;  // f(., 0), then each frame where it changed
   std::vector<TopologyEvent> topologyEvents;     // every event, exact from f (zero_set_topology.h)
-  std::vector<SaddleEvent> saddles;
-  std::vector<HoleEvent> holes;
+  std::vector<EventSurgery> surgery;            // one per topology event, in the same order
   int untangledVertices = 0;  // vertices moved by untangle.h
   std::string texture;        // what the cut's texture coordinates are (transfer.h); empty: not asked
   bool texCoordsPulled = false;
@@ -123,11 +127,12 @@ struct Report {
   int cutComponents = 0;
   long peakMemoryKiB = 0;   // peak resident set size of the process, if known
 
-  // Multi-line text for the log, the tests and the benchmark.
+  int HolesCut() const;  // events with outcome Cut
   bool CutAsNeeded() const {
     return cutComponents == neededComponents && cutBoundaryLoops == neededBoundaryLoops &&
            cutEulerCharacteristic == neededEulerCharacteristic;
   }
+  // Multi-line text for the log, the tests and the benchmark.
   std::string ToText() const;
 };
 

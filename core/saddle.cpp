@@ -140,31 +140,4 @@ std::vector<Saddle> FindSaddles(const VectorField &V) {
   return out;
 }
 
-std::vector<int> SaddleTracker::Observe(int step, const std::vector<Saddle> &saddles) {
-  std::vector<int> index;
-  std::vector<bool> taken(events_.size(), false);
-  for (const Saddle &s : saddles) {
-    // The nearest live event of the same kind within 2 cells continues; else a new one.
-    int best = -1;
-    double bestDistance = 2 * cell_;
-    for (int e = 0; e < int(events_.size()); ++e) {
-      if (taken[e] || lastStep_[e] < step - 2 || events_[e].expandingDirections != s.expandingDirections) continue;
-      const double d = vcg::Distance(lastPosition_[e], s.position);
-      if (d <= bestDistance) best = e, bestDistance = d;
-    }
-    if (best < 0) {
-      best = int(events_.size());
-      events_.push_back({step, s.position, s.expandingDirections, false});
-      lastStep_.push_back(step);
-      lastPosition_.push_back(s.position);
-      taken.push_back(false);
-    }
-    taken[best] = true;
-    lastStep_[best] = step;
-    lastPosition_[best] = s.position;
-    index.push_back(best);
-  }
-  return index;
-}
-
 } // namespace eulermap

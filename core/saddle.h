@@ -1,8 +1,10 @@
-// eulermap::FindSaddles, eulermap::SaddleTracker — where the moving surface changes
-// topology (paper Sec. 3.4; DESIGN.md settles the paper's index rule).
+// eulermap::FindSaddles — the saddles of the velocity field (paper Sec. 3.4; DESIGN.md
+// settles the paper's index rule). The paper cuts where they meet the surface; here the
+// topology events of f decide where to cut (zero_set_topology.h) and a saddle near an event
+// only orients its cut (cut_axis.h).
 //
-// A topology change of the level set f(., t) = 0 happens at a zero of the velocity field
-// V_k of saddle type: its Jacobian is non-singular and the real parts of its eigenvalues
+// The paper's topology change of the level set f(., t) = 0 happens at a zero of V_k of
+// saddle type: its Jacobian is non-singular and the real parts of its eigenvalues
 // do not all share a sign (the paper's "index -1" rule is not right in 3-D: a sink has
 // index -1 too). The kind is the number of expanding directions (eigenvalues with
 // positive real part): 2 where two sheets meet and open a disc (sphere -> torus, two
@@ -20,13 +22,9 @@
 // ring into zeros of alternating kind whose rate along the ring is nearly 0 (at most 0.075
 // of the largest in that case), while the zeros where the surface pinches have rates of
 // comparable size (0.08 to 1 of the largest there).
-//
-// SaddleTracker, over the steps: the same saddle seen at consecutive steps (same kind,
-// within 2 cells of where it was last seen, a gap of one step allowed) is one event.
 #pragma once
 
 #include "field.h"
-#include "report.h"
 
 #include <vector>
 
@@ -52,26 +50,5 @@ std::vector<Saddle> FindSaddles(const VectorField &V);
 //      real part at least kMinRate * the largest modulus away from 0), else -1. A saddle
 //      has 1 or 2, a source 3, a sink 0.
 int ExpandingDirections(const double J[3][3]);
-
-class SaddleTracker {
- public:
-  // in: the grid cell (world units), the distance scale of "the same place"
-  explicit SaddleTracker(double cell) : cell_(cell) {}
-
-  // in:  step k and the saddles of V_k
-  // out: per saddle, the index of its event in Events() (continued or new)
-  std::vector<int> Observe(int step, const std::vector<Saddle> &saddles);
-
-  // Every event: the step and position where it was first seen, its kind; `cut` stays
-  // false here (the caller decides and may update step and position to the cut's).
-  std::vector<SaddleEvent> &Events() { return events_; }
-  const std::vector<SaddleEvent> &Events() const { return events_; }
-
- private:
-  double cell_;
-  std::vector<SaddleEvent> events_;
-  std::vector<int> lastStep_;
-  std::vector<Point3> lastPosition_;
-};
 
 } // namespace eulermap

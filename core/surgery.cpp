@@ -23,8 +23,9 @@ namespace {
 constexpr double kSplitCells = 2;    // tracked edges longer than this (in cells) are split there
 constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
 constexpr double kSpreadStretch = 2;  // refinement spreads to faces stretched more than this
-constexpr double kReachCells = 10;  // the stable manifold's crossings count within this many cells (+ hole radius)
-constexpr double kCriticalShare = 0.5;  // f is critical at a saddle where |grad f| < this share of its size on the surface
+constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
+constexpr double kTakesPartCells = 6;  // the tracked surface takes part in an event this near (+ hole radius)
+constexpr double kCollapsedCells = 5;  // a piece within this many cells (+ hole radius) of a dying part goes with it
 
 std::uint64_t Key(int a, int b) {
   if (a > b) std::swap(a, b);
@@ -51,19 +52,6 @@ bool FarFromBox(const Point3 &p, double r, const Point3 &a, const Point3 &b, con
 
 double Area(const Point3 &a, const Point3 &b, const Point3 &c) { return ((b - a) ^ (c - a)).Norm() / 2; }
 
-// |grad f| at p by central differences one cell wide: close to 0 at a critical point of f,
-// also where f has a kink there (a blend of distance fields is critical on their medial
-// axes, where the trilinear gradient is one-sided).
-double CentralGradient(const ScalarField &f, const Point3 &p, double h) {
-  Point3 g;
-  for (int a = 0; a < 3; ++a) {
-    Point3 d(0, 0, 0);
-    d[a] = h;
-    g[a] = (f.Value(p + d) - f.Value(p - d)) / (2 * h);
-  }
-  return g.Norm();
-}
-
 // Distance s >= 0 along the unit direction d from o to triangle (a, b, c), or -1 if the
 // ray misses it (Moller-Trumbore).
 double RayTriangle(const Point3 &o, const Point3 &d, const Point3 &a, const Point3 &b, const Point3 &c) {
@@ -80,20 +68,10 @@ double RayTriangle(const Point3 &o, const Point3 &d, const Point3 &a, const Poin
   return s >= 0 ? s : -1;
 }
 
-// The median of |grad f| over (up to 1000 of) the tracked points: its size on the surface.
-double TypicalGradient(const ScalarField &f, const std::vector<Point3> &points) {
-  std::vector<double> g;
-  const std::size_t stride = std::max<std::size_t>(1, points.size() / 1000);
-  for (std::size_t n = 0; n < points.size(); n += stride) g.push_back(f.Gradient(points[n]).Norm());
-  if (g.empty()) return 0;
-  std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
-  return g[g.size() / 2];
-}
-
 } // namespace
 
 Surgery::Surgery(const Mesh &source, double radius, double cell)
-    : radius_(radius), cell_(cell), saddles_(cell) {
+    : radius_(radius), cell_(cell) {
   if (source.vn != int(source.vert.size()) || source.fn != int(source.face.size()))
     throw std::logic_error("Surgery: the source has deleted vertices or faces");
   sourceVertices_ = int(source.vert.size());
@@ -138,48 +116,65 @@ std::vector<Point3> Surgery::Positions(const std::vector<Point3> &tracked) const
   return p;
 }
 
-void Surgery::Step(int k, const VectorField &V, const ScalarField &fNext, double dt, const std::vector<Point3> &tracked) {
+void Surgery::AdvanceAddedPoints(const VectorField &V, const ScalarField &fNext, double dt) {
   for (Tracker &batch : batches_) batch.Advance(V, fNext, dt);
-  const std::vector<Saddle> found = FindSaddles(V);
-  const std::vector<int> event = saddles_.Observe(k, found);
-  const bool refining = std::any_of(tris_.begin(), tris_.end(), [](const Tri &t) { return t.state == kAlive && t.refinable; });
-  if (found.empty() && !refining) return;
-  std::vector<Point3> position = Positions(tracked);
+}
 
-  // 1-2. A saddle where f(., t_k+1) is critical cuts (a) the faces within its sphere, and
-  // all faces around a point inside it (no rim vertex is left where trajectories part);
-  // (b) at the step the level set passes it (f changes sign there), the faces its stable
-  // manifold crosses nearest to it (the tracked surface lags the level set near a critical
-  // point, where V vanishes: there the sheets part before they meet the sphere).
-  const double typical = TypicalGradient(fNext, position);
-  lastLevel_.resize(saddles_.Events().size(), std::nan(""));
-  std::vector<std::pair<int, int>> cuts;  // (face, event)
-  std::vector<char> inside(position.size());
-  for (std::size_t s = 0; s < found.size(); ++s) {
-    const Point3 &centre = found[s].position;
-    const double g = CentralGradient(fNext, centre, cell_), level = fNext.Value(centre);
-    const bool crossed = lastLevel_[event[s]] * level <= 0;  // false while unknown (NaN)
-    lastLevel_[event[s]] = level;
-    if (g > kCriticalShare * typical) continue;
-    for (std::size_t n = 0; n < position.size(); ++n) inside[n] = vcg::SquaredDistance(position[n], centre) <= radius_ * radius_;
-    for (int n = 0; n < int(tris_.size()); ++n) {
-      const Tri &t = tris_[n];
-      if (t.state != kAlive) continue;
-      const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
-      if (inside[t.v[0]] || inside[t.v[1]] || inside[t.v[2]] ||
-          (!FarFromBox(centre, radius_, a, b, c) && DistanceToTriangle(centre, a, b, c) <= radius_))
-        cuts.push_back({n, event[s]});
+void Surgery::Step(const std::vector<TopologyEvent> &events, const std::vector<Saddle> &saddles,
+                   const ScalarField &fNext, const std::vector<Point3> &tracked) {
+  std::vector<Point3> position = Positions(tracked);
+  std::vector<std::pair<int, Point3>> cutting;  // outcomes that cut at this step, and where
+  // A handle gained and one lost together (one step, within kTakesPartCells) leave the
+  // Betti numbers as they were (zero_set_topology.h): neither is cut.
+  std::vector<char> cancelled(events.size(), 0);
+  for (std::size_t a = 0; a < events.size(); ++a)
+    for (std::size_t b = 0; b < events.size() && events[a].kind == TopologyEventKind::HandleGained && !cancelled[a]; ++b)
+      if (events[b].kind == TopologyEventKind::HandleLost && !cancelled[b] &&
+          vcg::Distance(events[a].position, events[b].position) <= kTakesPartCells * cell_)
+        cancelled[a] = cancelled[b] = 1;
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    const TopologyEvent &event = events[e];
+    EventSurgery outcome;
+    outcome.event = int(outcomes_.size());
+    if (cancelled[e]) {
+      outcome.outcome = EventCut::Cancelled;
+      outcomes_.push_back(outcome);
+      continue;
     }
-    if (crossed)
-      for (int n : StableCrossing(found[s], position)) cuts.push_back({n, event[s]});
-  }
-  std::vector<std::pair<int, Point3>> cutting;  // events that cut at this step, and where
-  for (const std::pair<int, int> &c : cuts) {
-    if (tris_[c.first].state == kAlive) tris_[c.first].state = c.second;
-    const Point3 &where = found[std::find(event.begin(), event.end(), c.second) - event.begin()].position;
-    SaddleEvent &e = saddles_.Events()[c.second];
-    if (!e.cut) e.cut = true, e.step = k, e.position = where;
-    if (std::none_of(cutting.begin(), cutting.end(), [&](auto &w) { return w.first == c.second; })) cutting.push_back({c.second, where});
+    const CutShape shape = ShapeOf(event.kind);
+    const double near = kTakesPartCells * cell_ + radius_;
+    // A part dying: the piece of the tracked surface that shrank with it (cut off from the
+    // rest by the events before, all within kCollapsedCells of x) maps onto nothing and goes.
+    if (event.kind == TopologyEventKind::ComponentDied) {
+      const std::vector<int> piece = CollapsedPiece(event.position, kCollapsedCells * cell_ + radius_, position);
+      for (int n : piece) tris_[n].state = outcome.event;
+      if (!piece.empty()) outcome.outcome = EventCut::Collapsed, cutting.push_back({outcome.event, event.position});
+      outcomes_.push_back(outcome);
+      continue;
+    }
+    // 1. A cut kind, where the tracked surface takes part.
+    if (shape != CutShape::None) outcome.distanceCells = NearestTriangle(event.position, 2 * near, position) / cell_;
+    outcome.outcome = shape == CutShape::None                 ? EventCut::NotACutKind
+                      : outcome.distanceCells * cell_ > near ? EventCut::AwayFromSurface
+                                                              : EventCut::Cut;
+    if (outcome.outcome == EventCut::Cut) {
+      // 2. The faces its geometry crosses (b) — where sheets meet, only if both are tracked
+      // (a part grown from nothing merging with the surface leaves it as it is) — and the
+      // sphere around x (a).
+      const CutDirection axis = CutAxis(event, fNext, saddles);
+      outcome.axisFromSaddle = axis.fromSaddle;
+      bool bothSheets = true;
+      std::vector<int> faces = Crossing(event.position, axis.axis, shape, position, &bothSheets);
+      if (!bothSheets) {
+        outcome.outcome = EventCut::OneSheetTracked;
+      } else {
+        for (int n : InSphere(event.position, position)) faces.push_back(n);
+        for (int n : faces)
+          if (tris_[n].state == kAlive) tris_[n].state = outcome.event;
+        cutting.push_back({outcome.event, event.position});
+      }
+    }
+    outcomes_.push_back(outcome);
   }
   // 3. Clean the rims; 4. refine them as they open.
   if (!cutting.empty()) Clean(position, cutting);
@@ -190,12 +185,78 @@ void Surgery::Settle(const HermiteField &f1) {
   for (Tracker &batch : batches_) batch.Settle(f1);
 }
 
-std::vector<int> Surgery::StableCrossing(const Saddle &saddle, const std::vector<Point3> &position) const {
-  const Point3 &o = saddle.position, &d = saddle.stable;
+double Surgery::NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const {
+  double nearest = limit;
+  for (const Tri &t : tris_) {
+    if (t.state != kAlive) continue;
+    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+    if (!FarFromBox(x, nearest, a, b, c)) nearest = std::min(nearest, DistanceToTriangle(x, a, b, c));
+  }
+  return nearest;
+}
+
+std::vector<int> Surgery::CollapsedPiece(const Point3 &x, double reach, const std::vector<Point3> &position) const {
+  int seed = -1;
+  double nearest = reach;
+  for (int n = 0; n < int(tris_.size()); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state != kAlive) continue;
+    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+    if (FarFromBox(x, nearest, a, b, c)) continue;
+    const double d = DistanceToTriangle(x, a, b, c);
+    if (d < nearest) nearest = d, seed = n;
+  }
+  if (seed < 0) return {};
+  std::unordered_map<std::uint64_t, std::vector<int>> faces;  // alive faces around each edge
+  for (int n = 0; n < int(tris_.size()); ++n)
+    if (tris_[n].state == kAlive)
+      for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
+  std::vector<char> seen(tris_.size(), 0);
+  std::vector<int> piece, stack = {seed};
+  seen[seed] = 1;
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    piece.push_back(n);
+    const Tri &t = tris_[n];
+    for (int c = 0; c < 3; ++c)
+      if (vcg::Distance(position[t.v[c]], x) > reach) return {};  // reaches beyond: not collapsed
+    for (int e = 0; e < 3; ++e)
+      for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])])
+        if (!seen[m]) seen[m] = 1, stack.push_back(m);
+  }
+  return piece;
+}
+
+std::vector<int> Surgery::InSphere(const Point3 &x, const std::vector<Point3> &position) const {
+  std::vector<int> cut;
+  for (int n = 0; n < int(tris_.size()); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state != kAlive) continue;
+    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+    const double r2 = radius_ * radius_;
+    if (vcg::SquaredDistance(a, x) <= r2 || vcg::SquaredDistance(b, x) <= r2 || vcg::SquaredDistance(c, x) <= r2) {
+      cut.push_back(n);
+      continue;
+    }
+    if (!FarFromBox(x, radius_, a, b, c) && DistanceToTriangle(x, a, b, c) <= radius_) cut.push_back(n);
+  }
+  // All faces around a corner inside the sphere.
+  std::vector<char> inside(position.size(), 0);
+  for (std::size_t n = 0; n < position.size(); ++n) inside[n] = vcg::SquaredDistance(position[n], x) <= radius_ * radius_;
+  for (int n = 0; n < int(tris_.size()); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state == kAlive && (inside[t.v[0]] || inside[t.v[1]] || inside[t.v[2]])) cut.push_back(n);
+  }
+  return cut;
+}
+
+std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape shape, const std::vector<Point3> &position,
+                                   bool *bothSheets) const {
   const double reach = kReachCells * cell_ + radius_;
   std::vector<int> cut;
-  if (saddle.expandingDirections == 2) {
-    // Two sheets arrive along the stable line: on each side, the nearest face it pierces,
+  if (shape == CutShape::Discs) {
+    // Two sheets face each other along the axis: on each side, the nearest face it pierces,
     // and the faces within the sphere's radius of that point.
     for (double side : {1.0, -1.0}) {
       int hit = -1;
@@ -206,7 +267,10 @@ std::vector<int> Surgery::StableCrossing(const Saddle &saddle, const std::vector
         const double s = RayTriangle(o, d * side, position[t.v[0]], position[t.v[1]], position[t.v[2]]);
         if (s >= 0 && s < nearest) nearest = s, hit = n;
       }
-      if (hit < 0) continue;
+      if (hit < 0) {
+        *bothSheets = false;
+        continue;
+      }
       const Point3 q = o + d * (side * nearest);
       for (int n = 0; n < int(tris_.size()); ++n) {
         const Tri &t = tris_[n];
@@ -217,13 +281,13 @@ std::vector<int> Surgery::StableCrossing(const Saddle &saddle, const std::vector
     }
     return cut;
   }
-  // A neck pinches across the stable plane: the loop of faces crossing it around the
-  // saddle, from the nearest such face along faces that share a crossing edge.
+  // A neck pinches across the plane normal to the axis: the loop of faces crossing it
+  // around x, from the nearest such face along faces that share a crossing edge.
   auto side = [&](int p) { return (position[p] - o) * d >= 0; };
   auto crosses = [&](const Tri &t) { return side(t.v[0]) != side(t.v[1]) || side(t.v[1]) != side(t.v[2]); };
   int seed = -1;
   double nearest = reach;
-  std::unordered_map<std::uint64_t, std::vector<int>> faces;  // crossing faces near the saddle, by edge
+  std::unordered_map<std::uint64_t, std::vector<int>> faces;  // crossing faces near x, by edge
   for (int n = 0; n < int(tris_.size()); ++n) {
     const Tri &t = tris_[n];
     if (t.state != kAlive || !crosses(t)) continue;
@@ -255,7 +319,7 @@ std::vector<int> Surgery::StableCrossing(const Saddle &saddle, const std::vector
 }
 
 void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::pair<int, Point3>> &cutting) {
-  // Faces the cleaning removes go to the nearest saddle that cut at this step.
+  // Faces the cleaning removes go to the nearest event that cut at this step.
   auto remove = [&](Tri &t) {
     const Point3 centre = (position[t.v[0]] + position[t.v[1]] + position[t.v[2]]) / 3;
     double best = 1e300;
@@ -446,8 +510,8 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext) {
 }
 
 std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &tracked, Mesh &cut,
-                                   std::vector<HoleEvent> &holes) const {
-  holes.clear();
+                                   std::vector<EventSurgery> &outcomes) const {
+  outcomes = outcomes_;
   cut.Clear();
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(cut, source, false, false);
   vcg::tri::UpdateBounding<Mesh>::Box(cut);
@@ -458,15 +522,11 @@ std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &trac
 
   // The report: per cutting event, faces removed and rim length on the source. A rim edge
   // goes to the event of the nearest removed face.
-  const std::vector<SaddleEvent> &events = saddles_.Events();
-  std::vector<int> holeOf(events.size(), -1);
-  for (int e = 0; e < int(events.size()); ++e)
-    if (events[e].cut) holeOf[e] = int(holes.size()), holes.push_back({e, 0, 0});
-  std::vector<std::pair<Point3, int>> removed;  // source-side centroid, hole
+  std::vector<std::pair<Point3, int>> removed;  // source-side centroid, outcome
   for (const Tri &t : tris_)
     if (t.state >= 0) {
-      ++holes[holeOf[t.state]].facesRemoved;
-      removed.push_back({(sourcePosition_[t.v[0]] + sourcePosition_[t.v[1]] + sourcePosition_[t.v[2]]) / 3, holeOf[t.state]});
+      ++outcomes[t.state].facesRemoved;
+      removed.push_back({(sourcePosition_[t.v[0]] + sourcePosition_[t.v[1]] + sourcePosition_[t.v[2]]) / 3, t.state});
     }
   std::unordered_map<std::uint64_t, int> alive;
   for (const Tri &t : tris_)
@@ -481,7 +541,7 @@ std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &trac
         double best = 1e300;
         for (const auto &r : removed)
           if (vcg::SquaredDistance(r.first, (a + b) / 2) < best) best = vcg::SquaredDistance(r.first, (a + b) / 2), hole = r.second;
-        holes[hole].rimLength += vcg::Distance(a, b);
+        outcomes[hole].rimLength += vcg::Distance(a, b);
       }
 
   // Vertex data of the added points: interpolated from the edge they split.

@@ -4,25 +4,31 @@
 //
 // The tracked surface is the source's triangles over the tracked points (the source's
 // vertices, whose trajectories the pipeline's Tracker follows, plus points this class
-// adds). After each step k:
-//   1. saddles: the saddle-type zeros of V_k (saddle.h), followed over the steps as events.
-//      Only a saddle where f(., t_k+1) is critical can cut: |grad f| there (central
-//      differences one cell wide) below half its median on the tracked surface. Morse
-//      theory: the level set changes topology only at critical points of f. V also has
-//      saddles where none is (a zero of V drifting through a regularly moving surface:
-//      sphere -> ellipsoid has two, with |grad f| 0.99 of the surface's), and the paper's
-//      rule alone would cut there.
-//   2. cut, at every step it applies:
-//      (a) the paper's rule: an event whose sphere (radius = hole radius) meets the
-//          tracked surface (some tracked triangle within the radius: vertex, edge or
-//          interior) cuts those faces, and all faces around a point inside the sphere;
-//      (b) at the step the level set passes the saddle (f changes sign there): the faces
-//          nearest to it that its stable manifold crosses. Near a critical point V
-//          vanishes, so the tracked sheets part before they reach the saddle and often
-//          never meet the sphere (sphere -> 3holes: 5 to 6 cells away when f = 0 at the
-//          saddle). Kind 2: the faces the stable line pierces on either side (within 10
-//          cells + hole radius), with those within the radius of that point; kind 1: the
-//          loop of faces crossing the stable plane around the neck;
+// adds). After each step k, for each topology event of {f(., t_k+1) < 0} at that step
+// (zero_set_topology.h: exact, decided from f alone, at a node x):
+//   1. which: the event's kind gives the cut's shape (cut_axis.h): two sheets meeting
+//      (handle gained, parts merged) lose a disc each, a pinching neck (handle lost, part
+//      split) a band; births, deaths and cavities are not cut. The tracked surface takes
+//      part only if some tracked triangle lies within kTakesPartCells + the hole radius of x
+//      (a part grown from nothing, which no tracked point reaches, changes topology far
+//      from every tracked triangle): else the event is reported, not cut (the tracked
+//      sheets lag the level set near a critical point, where V vanishes: 5 to 6 cells at
+//      sphere -> 3holes, 3 at a blob splitting, at grid 48-64). A handle gained and one
+//      lost at one step and place cancel: neither is cut. Where sheets
+//      meet, both must be tracked (step 2 b finds a tracked face on each side): a part
+//      grown from nothing that merges with the surface is reported, not cut. Where a part
+//      dies, the piece of the tracked surface that shrank with it (already cut off by the
+//      events before, and all within kCollapsedCells + the hole radius of the node) maps
+//      onto nothing: it goes (genus 2 -> sphere in the linear blend: the
+//      outer arcs of both loops pinch off and vanish).
+//   2. cut, oriented by the axis d of cut_axis.h (a saddle of V_k near x, else f's Hessian):
+//      (a) the paper's rule: the faces within the hole radius of x, and all faces around a
+//          point inside that sphere (no rim vertex is left where trajectories part);
+//      (b) the faces nearest to x that the event's own geometry crosses. Near a critical
+//          point V vanishes, so the tracked sheets part before they reach x and may never
+//          meet the sphere. Discs: on each side, the nearest face the line (x, d) pierces
+//          (within kReachCells + hole radius), with those within the radius of that point;
+//          Band: the loop of faces crossing the plane through x normal to d around the neck;
 //   3. clean: the rim left must be a manifold boundary and look deliberate:
 //        - ears: a face with two or more edges on a rim goes (no dangling faces);
 //        - non-manifold vertices: where the faces around a vertex form two or more fans,
@@ -42,11 +48,11 @@
 //      has vertices.
 // The map stays Eulerian: cutting never moves a point, and every vertex of the cut source
 // is mapped by its own trajectory. The vertices that stay keep the images of the single
-// tracking pass. With no saddle cutting, the cut source is the source.
+// tracking pass. With no event cut, the cut source is the source.
 #pragma once
 
+#include "cut_axis.h"
 #include "report.h"
-#include "saddle.h"
 #include "tracker.h"
 
 #include <array>
@@ -61,17 +67,23 @@ class Surgery {
   //     radius and the grid cell (world units)
   Surgery(const Mesh &source, double radius, double cell);
 
-  // One step, once the pipeline's tracker has moved the source's vertices to t_k+1.
-  // in:  k, V_k, fNext = f(., t_k+1), dt, tracked (the source's vertices first, in order)
-  // out: events followed, faces cut, the surface cleaned and refined (steps 1-4 above)
-  void Step(int k, const VectorField &V, const ScalarField &fNext, double dt, const std::vector<Point3> &tracked);
+  // The added points' trajectories, one step through V_k onto fNext = f(., t_k+1) (Eq. 7),
+  // beside the pipeline's tracker.
+  void AdvanceAddedPoints(const VectorField &V, const ScalarField &fNext, double dt);
+
+  // One step, once the tracked points have moved to t_k+1.
+  // in:  the step's topology events, the saddles of V_k (only to orient cuts; may be empty),
+  //      fNext = f(., t_k+1), tracked (the source's vertices first, in order)
+  // out: faces cut at the events, the surface cleaned and refined (steps 1-4 above); one
+  //      outcome per event appended to Outcomes()
+  void Step(const std::vector<TopologyEvent> &events, const std::vector<Saddle> &saddles, const ScalarField &fNext,
+            const std::vector<Point3> &tracked);
 
   // After the last step: the added points' last pull-back (Tracker::Settle).
   void Settle(const HermiteField &f1);
 
-  // Every saddle event: step and position where it first cut (where it was first seen if
-  // it never cut), kind, whether it cut.
-  const std::vector<SaddleEvent> &Saddles() const { return saddles_.Events(); }
+  // One per event given to Step, in order (faces removed and rim length are filled by Build).
+  const std::vector<EventSurgery> &Outcomes() const { return outcomes_; }
   // The added points that faces of the cut source use (those of removed faces are not
   // counted: they are not in the cut).
   int PointsAdded() const;
@@ -79,11 +91,11 @@ class Surgery {
   // in:  source (as given to the constructor), tracked (the source vertices' final positions)
   // out: cut: the source refined where points were added, without the removed faces and the
   //      vertices left without faces; compact; vertex and face data of the source (wedge
-  //      texture coordinates, colours, normals, ...) interpolated onto what is new. holes:
-  //      one entry per cutting event (faces of the tracked surface removed, rim length on
-  //      the source). Returns the image (final tracked position) of every vertex of cut.
+  //      texture coordinates, colours, normals, ...) interpolated onto what is new.
+  //      outcomes: Outcomes() with each cut's faces removed and rim length on the source.
+  //      Returns the image (final tracked position) of every vertex of cut.
   std::vector<Point3> Build(Mesh &source, const std::vector<Point3> &tracked, Mesh &cut,
-                            std::vector<HoleEvent> &holes) const;
+                            std::vector<EventSurgery> &outcomes) const;
 
  private:
   struct Tri {
@@ -91,32 +103,39 @@ class Surgery {
     int root = 0;                    // the source face it lies in
     std::array<Point3, 3> bary;      // barycentric coordinates of its corners in the root face
     std::array<bool, 3> border{};    // edge e (v[e], v[e+1]) lies on a boundary of the source
-    int state = kAlive;              // kAlive, kSplit, or the event that removed it
+    int state = kAlive;              // kAlive, kSplit, or the outcome (event) that removed it
     bool refinable = false;
     int component = 0;               // connected component of the source
   };
   static constexpr int kAlive = -1, kSplit = -2;
 
   std::vector<Point3> Positions(const std::vector<Point3> &tracked) const;
-  // Faces nearest to the saddle that its stable manifold crosses (kind 2: pierced by the
-  // stable line on each side, with those within the sphere's radius there; kind 1: the loop
-  // crossing the stable plane).
-  std::vector<int> StableCrossing(const Saddle &saddle, const std::vector<Point3> &position) const;
-  // cutting: the events that cut at this step, with their saddles' positions
+  // Distance from x to the nearest alive tracked triangle (at most `limit`, returned when none is nearer).
+  double NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const;
+  // The connected piece of alive faces nearest to x if all of it lies within reach of x, else none.
+  std::vector<int> CollapsedPiece(const Point3 &x, double reach, const std::vector<Point3> &position) const;
+  // Step 2 (a): the faces within the sphere's radius of x, or with a corner inside it.
+  std::vector<int> InSphere(const Point3 &x, const std::vector<Point3> &position) const;
+  // Step 2 (b): the faces the event's geometry crosses nearest to x (Discs: pierced by the
+  // line (x, axis) on each side, with those within the radius there; Band: the loop
+  // crossing the plane through x normal to axis).
+  // bothSheets: set false when a side has no tracked face (Discs).
+  std::vector<int> Crossing(const Point3 &x, const Point3 &axis, CutShape shape, const std::vector<Point3> &position,
+                            bool *bothSheets) const;
+  // cutting: the outcomes (events) that cut at this step, with their positions
   void Clean(const std::vector<Point3> &position, const std::vector<std::pair<int, Point3>> &cutting);
   // position: every point's tracked position, extended with the points added
   void Refine(std::vector<Point3> &position, const ScalarField &fNext);
 
   double radius_, cell_;
   int sourceVertices_ = 0, sourceFaces_ = 0;
-  SaddleTracker saddles_;
+  std::vector<EventSurgery> outcomes_;          // per event seen
   std::vector<Tri> tris_;
   std::vector<double> componentArea_;           // per component of the source, its area
   std::vector<Point3> sourcePosition_;          // per point: where it lies on the source
   std::vector<std::array<int, 2>> parents_;     // per added point: the edge it splits
   std::vector<std::array<int, 2>> trackedBy_;   // per added point: (batch, index in batch)
   std::vector<Tracker> batches_;                // trajectories of the added points
-  std::vector<double> lastLevel_;               // per event: f at its saddle when last seen
 };
 
 // in:  cut (after surgery)

@@ -123,17 +123,14 @@ QString LayerLine(const QString &label, const Mesh &mesh) {
 
 std::map<std::string, QVariant> ReportFigures(const Report &r) {
   const MapQuality &q = r.quality;
-  int cuts = 0;
-  for (const SaddleEvent &s : r.saddles) cuts += s.cut ? 1 : 0;
   return {
       {"repairs", int(r.repairs.size())},
       {"warnings", int(r.warnings.size())},
       {"grid_cell_size", r.cellSize},
       {"steps", r.steps},
       {"anchors", r.anchors},
-      {"saddles", int(r.saddles.size())},
-      {"saddles_cut", cuts},
-      {"holes", int(r.holes.size())},
+      {"topology_events", int(r.topologyEvents.size())},
+      {"holes", r.HolesCut()},
       {"cut_vertices", r.cutVertices},
       {"cut_faces", r.cutFaces},
       {"cut_components", r.cutComponents},

@@ -32,8 +32,8 @@ const std::vector<ParameterSpec> &Parameters() {
        "moving surface, which the pull-back then corrects.",
        {}},
       {param::kHoleRadius, K::Float, defaults.holeRadius, "Hole radius (cells)",
-       "Radius, in grid cells, of the sphere around a saddle point of the velocity field inside "
-       "which source faces are cut away when the topology changes (paper, Sec. 3). Larger radii "
+       "Radius, in grid cells, of the sphere around a topology change of the moving surface inside "
+       "which source faces are cut away (paper, Sec. 3). Larger radii "
        "cut bigger, cleaner holes.",
        {}},
       {param::kAlign, K::Enum, defaults.align == Align::None ? 0 : 1, "Alignment",
@@ -86,14 +86,15 @@ QString FilterDescription() {
          "on a common grid; the field is morphed from the source to the target (optionally "
          "steered by named anchor points), a smooth velocity field is solved at every time "
          "step, and every source vertex is advected along it and kept on the moving surface. "
-         "Where a saddle point of the velocity field meets the surface, the topology changes and "
-         "the faces around it are cut from the source.<br><br>"
+         "Where the moving surface changes topology (found exactly from the morphed field), the "
+         "faces there are cut from the source: a disc from each of two sheets that meet, a band "
+         "around a neck that pinches.<br><br>"
          "New layers: <b>&lt;source&gt;_cut</b> (the source minus the removed discs, original "
          "positions, per-vertex attribute <i>TargetPosition</i>, vertex quality = local "
          "distortion, texture coordinates, colour and quality from the target when asked), "
          "<b>&lt;source&gt;_mapped</b> (same vertices and faces, at their images on the "
          "target, with the source's own texture) and, on request, <b>&lt;source&gt;_filled</b>. "
-         "The input layers are not changed. The log reports the grid, the anchors, every saddle and hole, the time per "
+         "The input layers are not changed. The log reports the grid, the anchors, every topology event and whether it was cut, the time per "
          "stage and the map's quality.<br><br>"
          "See: <br>"
          "<i>Hyeongjun Park, Youngjoong Cho, Seungbae Bang, Sung-Hee Lee</i><br>"

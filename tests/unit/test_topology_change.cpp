@@ -92,10 +92,11 @@ void MakeDumbbell(Mesh &m, double c, double R, double neck) {
 struct Figures {
   Topology topology;
   Result result;
-  // The saddle kinds of the events that cut.
-  std::vector<int> CutKinds() const {
-    std::vector<int> kinds;
-    for (const HoleEvent &h : result.report.holes) kinds.push_back(result.report.saddles[h.saddle].expandingDirections);
+  // The shapes of the cuts made (cut_axis.h: Discs where sheets meet, Band where a neck pinches).
+  std::vector<CutShape> CutKinds() const {
+    std::vector<CutShape> kinds;
+    for (const EventSurgery &s : result.report.surgery)
+      if (s.outcome == EventCut::Cut) kinds.push_back(ShapeOf(result.report.topologyEvents[s.event].kind));
     return kinds;
   }
 };
@@ -184,85 +185,98 @@ TEST(SaddleFinder, FindsTheSaddlesOfLinearFields) {
   EXPECT_EQ(onNode.size(), 1u);
 }
 
-// f(p) = |p - c|^2 - s on V's grid: critical at c, with f(c) = -s.
-ScalarField CriticalAt(const Grid &g, const Point3 &c, double s) {
+// f(p) = sum_a curvature[a] (p - c)_a^2 on V's grid: critical at c, f(c) = 0.
+ScalarField Quadric(const Grid &g, const Point3 &c, const Point3 &curvature) {
   ScalarField f(g, 0.0);
-  g.ForEachNode([&](int i, int j, int k, std::size_t n) { f.values[n] = vcg::SquaredDistance(g.Node(i, j, k), c) - s; });
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) {
+    const Point3 d = g.Node(i, j, k) - c;
+    f.values[n] = curvature[0] * d[0] * d[0] + curvature[1] * d[1] * d[1] + curvature[2] * d[2] * d[2];
+  });
   return f;
 }
 
-TEST(Surgery, FarSaddleCutsNothingAndPersistentSaddleIsOneEvent) {
-  Mesh sphere;
-  MakeSphere(sphere, Point3(0, 0, 0), 0.5, 3);
-  std::vector<Point3> tracked;
-  for (const Vertex &v : sphere.vert) tracked.push_back(v.cP());
-  const double A[3][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};  // one expanding direction
-  const double cell = LinearField(A, Point3(0, 0, 0)).grid.h;
-
-  // A saddle far from the surface (2.6 cells), seen over 10 steps while it drifts a little.
-  Surgery far(sphere, cell, cell);
-  for (int k = 0; k < 10; ++k) {
-    const Point3 c(0.85, 0.02 * k, 0.0);
-    const VectorField V = LinearField(A, c);
-    ASSERT_EQ(FindSaddles(V).size(), 1u);
-    far.Step(k, V, CriticalAt(V.grid, c, 1e-4), 0.1, tracked);
-  }
-  ASSERT_EQ(far.Saddles().size(), 1u);
-  EXPECT_FALSE(far.Saddles()[0].cut);
-  EXPECT_EQ(far.Saddles()[0].step, 0);
-  EXPECT_EQ(far.Saddles()[0].expandingDirections, 1);
-  Mesh cut;
-  std::vector<HoleEvent> holes;
-  EXPECT_EQ(far.Build(sphere, tracked, cut, holes).size(), sphere.vert.size());
-  EXPECT_TRUE(holes.empty());
-  EXPECT_EQ(cut.fn, sphere.fn);
-
-  // The same saddle on the surface cuts one disc, where f is critical...
-  const Point3 c(0.52, 0.01, 0.02);
-  Surgery near(sphere, cell, cell);
-  near.Step(0, LinearField(A, c), CriticalAt(LinearField(A, c).grid, c, 1e-4), 0.1, tracked);
-  ASSERT_EQ(near.Saddles().size(), 1u);
-  EXPECT_TRUE(near.Saddles()[0].cut);
-  const std::vector<Point3> images = near.Build(sphere, tracked, cut, holes);
-  EXPECT_EQ(images.size(), cut.vert.size());
-  EXPECT_LT(cut.vn, sphere.vn);
-  ASSERT_EQ(holes.size(), 1u);
-  EXPECT_GT(holes[0].facesRemoved, 0);
-  EXPECT_GT(holes[0].rimLength, 0);
-  const Topology t = MeasureTopology(cut);
-  EXPECT_EQ(t.components, 1);
-  EXPECT_EQ(t.boundaryLoops, 1);
-  EXPECT_EQ(t.eulerCharacteristic, 1);
-  // ... and nothing where f is regular (a zero of V passing through a moving surface).
-  Surgery regular(sphere, cell, cell);
-  regular.Step(0, LinearField(A, c), CriticalAt(LinearField(A, c).grid, Point3(0, 0, 0), 0.25), 0.1, tracked);
-  EXPECT_FALSE(regular.Saddles()[0].cut);
+TopologyEvent EventAt(const Grid &g, const vcg::Point3i &node, TopologyEventKind kind) {
+  TopologyEvent e;
+  e.node = node;
+  e.position = g.Node(node[0], node[1], node[2]);
+  e.kind = kind;
+  return e;
 }
 
-// Two sheets that part before they reach the saddle: when the level set passes it (f
-// changes sign there), the faces its stable line pierces on each side go.
-TEST(Surgery, LevelPassingTheSaddleCutsWhereTheStableLinePierces) {
+// The axis of a cut: the odd-signed principal direction of f's Hessian (one negative
+// curvature: two parts meeting or a neck; two: a membrane tearing or a hole closing), or
+// the stable manifold of a saddle of V of the matching kind within two cells.
+TEST(CutAxis, OddSignedCurvatureOrNearbySaddle) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
+  const vcg::Point3i node(7, 7, 7);
+  const TopologyEvent merge = EventAt(g, node, TopologyEventKind::PartsMerged);
+  const Point3 x = merge.position;
+  EXPECT_NEAR(std::abs(CutAxis(merge, Quadric(g, x, Point3(1, -2, 1)), {}).axis.Y()), 1, 1e-9);
+  const TopologyEvent closing = EventAt(g, node, TopologyEventKind::HandleLost);
+  const CutDirection d = CutAxis(closing, Quadric(g, x, Point3(-1, -1, 3)), {});
+  EXPECT_NEAR(std::abs(d.axis.Z()), 1, 1e-9);
+  EXPECT_FALSE(d.fromSaddle);
+  Saddle near{x + Point3(g.h, 0, 0), 1, Point3(1, 0, 0)}, wrongKind{x, 2, Point3(0, 1, 0)}, far{x + Point3(3 * g.h, 0, 0), 1, Point3(0, 1, 0)};
+  const CutDirection s = CutAxis(closing, Quadric(g, x, Point3(-1, -1, 3)), {wrongKind, far, near});
+  EXPECT_TRUE(s.fromSaddle);
+  EXPECT_NEAR(s.axis.X(), 1, 1e-9);
+  EXPECT_EQ(ShapeOf(TopologyEventKind::HandleGained), CutShape::Discs);
+  EXPECT_EQ(ShapeOf(TopologyEventKind::PartSplit), CutShape::Band);
+  EXPECT_EQ(ShapeOf(TopologyEventKind::ComponentBorn), CutShape::None);
+}
+
+// Events cut by their kind where the tracked surface takes part: two sheets meeting lose a
+// disc each, whatever V's saddles say; an event far from every tracked triangle and a birth
+// are reported, not cut.
+TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;  // 16^3 nodes over [-1, 1]^3
+  const double cell = g.h;
   Mesh sphere;
-  MakeSphere(sphere, Point3(0, 0, 0), 0.5, 3);
+  MakeSphere(sphere, g.Node(7, 7, 7), 0.3, 3);  // 2.25 cells from its centre
   std::vector<Point3> tracked;
   for (const Vertex &v : sphere.vert) tracked.push_back(v.cP());
-  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};  // two expanding directions, stable along z
-  const VectorField V = LinearField(A, Point3(0.01, 0.02, 0.03));  // 3.5 to 4 cells from either pole
-  const std::vector<Saddle> found = FindSaddles(V);
-  ASSERT_EQ(found.size(), 1u);
-  EXPECT_NEAR(std::abs(found[0].stable.Z()), 1, 1e-9);
-  const double cell = V.grid.h;
+  const ScalarField f = Quadric(g, g.Node(7, 7, 7), Point3(-1, -1, 1));  // a membrane through the centre, normal z
   Surgery surgery(sphere, cell, cell);
-  surgery.Step(0, V, CriticalAt(V.grid, found[0].position, -0.03), 0.1, tracked);  // f > 0 at the saddle
-  EXPECT_FALSE(surgery.Saddles()[0].cut);
-  surgery.Step(1, V, CriticalAt(V.grid, found[0].position, 0.03), 0.1, tracked);   // f < 0: the level passed
-  ASSERT_EQ(surgery.Saddles().size(), 1u);
-  EXPECT_TRUE(surgery.Saddles()[0].cut);
-  EXPECT_EQ(surgery.Saddles()[0].step, 1);
+  surgery.Step({EventAt(g, {14, 14, 14}, TopologyEventKind::HandleGained),  // 7 cells away
+                EventAt(g, {7, 7, 7}, TopologyEventKind::ComponentBorn), EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)},
+               {}, f, tracked);
+  ASSERT_EQ(surgery.Outcomes().size(), 3u);
+  EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
+  EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::NotACutKind);
+  EXPECT_EQ(surgery.Outcomes()[2].outcome, EventCut::Cut);
+  EXPECT_FALSE(surgery.Outcomes()[2].axisFromSaddle);
   Mesh cut;
-  std::vector<HoleEvent> holes;
-  surgery.Build(sphere, tracked, cut, holes);
-  const Topology t = MeasureTopology(cut);  // both poles go: an annulus (sphere -> torus)
+  std::vector<EventSurgery> outcomes;
+  surgery.Build(sphere, tracked, cut, outcomes);
+  EXPECT_GT(outcomes[2].facesRemoved, 0);
+  EXPECT_GT(outcomes[2].rimLength, 0);
+  const Topology t = MeasureTopology(cut);  // both poles along z go: an annulus (sphere -> torus)
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  EXPECT_EQ(t.eulerCharacteristic, 0);
+  for (const Vertex &v : cut.vert)  // the poles went, the equator stayed
+    if (!v.IsD()) EXPECT_LT(std::abs(v.cP().Z() - g.Node(7, 7, 7).Z()), 0.29);
+}
+
+// A neck pinching: the band of faces crossing the plane normal to the neck goes.
+TEST(Surgery, PinchingNeckLosesABand) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
+  Mesh torus;
+  MakeTorus(torus, g.Node(7, 7, 7), 0.55, 0.2);
+  std::vector<Point3> tracked;
+  for (const Vertex &v : torus.vert) tracked.push_back(v.cP());
+  const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
+  const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
+  Surgery surgery(torus, g.h, g.h);
+  surgery.Step({EventAt(g, node, TopologyEventKind::HandleLost)}, {}, f, tracked);
+  ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
+  Mesh cut;
+  std::vector<EventSurgery> outcomes;
+  surgery.Build(torus, tracked, cut, outcomes);
+  const Topology t = MeasureTopology(cut);  // a cylinder
   EXPECT_EQ(t.components, 1);
   EXPECT_EQ(t.boundaryLoops, 2);
   EXPECT_EQ(t.eulerCharacteristic, 0);
@@ -281,7 +295,7 @@ TEST(TopologyChange, SphereToTorus) {
   EXPECT_EQ(f.topology.Genus(), 0);
   EXPECT_EQ(f.topology.boundaryLoops, 2);
   EXPECT_EQ(f.topology.eulerCharacteristic, 0);
-  EXPECT_EQ(f.CutKinds(), std::vector<int>({2}));  // two sheets meet on the axis
+  EXPECT_EQ(f.CutKinds(), std::vector<CutShape>({CutShape::Discs}));  // two sheets meet on the axis
   for (const Point3 &p : RimImages(f.result.cut)) EXPECT_LT(std::hypot(p.X(), p.Y()), R);
   const Topology filled = MeasureTopology(f.result.filled);  // tri::Hole closes both loops: a sphere
   EXPECT_EQ(filled.boundaryLoops, 0);
@@ -298,7 +312,7 @@ TEST(TopologyChange, TorusToSphere) {
   MakeSphere(target, Point3(0, 0, 0), 1.2, 4);
   Figures f;
   MapBetween(source, target, 48, f);
-  EXPECT_EQ(f.CutKinds(), std::vector<int>({1}));  // the hole closes: a neck pinches
+  EXPECT_EQ(f.CutKinds(), std::vector<CutShape>({CutShape::Band}));  // the hole closes: a neck pinches
   EXPECT_EQ(f.topology.components, 1);
   EXPECT_EQ(f.topology.Genus(), 0);
   EXPECT_EQ(f.topology.boundaryLoops, 2);
@@ -315,7 +329,7 @@ TEST(TopologyChange, TwoSpheresMerge) {
   MakeEllipsoid(target, Point3(0, 0, 0), Point3(2, 1, 1), 5);
   Figures f;
   MapBetween(source, target, 48, f);
-  EXPECT_EQ(f.CutKinds(), std::vector<int>({2}));
+  EXPECT_EQ(f.CutKinds(), std::vector<CutShape>({CutShape::Discs}));
   EXPECT_EQ(f.topology.components, 2);
   EXPECT_EQ(f.topology.Genus(), 0);
   EXPECT_EQ(f.topology.boundaryLoops, 2);
@@ -336,7 +350,7 @@ TEST(TopologyChange, DumbbellSplits) {
   Join(target, other);
   Figures f;
   MapBetween(source, target, 64, f);
-  EXPECT_EQ(f.CutKinds(), std::vector<int>({1}));
+  EXPECT_EQ(f.CutKinds(), std::vector<CutShape>({CutShape::Band}));
   EXPECT_EQ(f.topology.components, 2);
   EXPECT_EQ(f.topology.Genus(), 0);
   EXPECT_EQ(f.topology.boundaryLoops, 2);
