@@ -5,11 +5,13 @@
 #include "hermite_field.h"
 #include "input.h"
 #include "memory.h"
+#include "morph_topology.h"
 #include "morph.h"
 #include "quality.h"
 #include "saddle.h"
 #include "sdf.h"
 #include "surgery.h"
+#include "surgery_plan.h"
 #include "topology.h"
 #include "tracker.h"
 #include "transfer.h"
@@ -164,119 +166,108 @@ std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align alig
   return align == Align::None ? "none (target as it is)" : "centre-and-scale (centroid and bounding-box diagonal)";
 }
 
-} // namespace
+using Stage = std::function<void(double, const std::string &)>;  // progress; throws Error to cancel
 
-void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
-                const Options &options, Result &result, const Progress &progress, const std::vector<Point3> &samples) {
-  if (&sourceIn == &targetIn) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
-  options.Validate();
-  CheckAnchors(anchors);
-  for (std::size_t n = 0; n < samples.size(); ++n)
-    if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
-      throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
-  const ThreadScope threads(options.threads);
-  auto report = [&](double share, const std::string &stage) {
-    if (progress && !progress(share, stage)) throw Error("cancelled");
-  };
-  Report &rep = result.report;
-  rep = Report();
-  report(0.0, "checking the meshes");
-  Mesh source, target;  // private copies, repaired (input.h)
-  CopyMesh(source, sourceIn);
-  CopyMesh(target, targetIn);
-  PrepareMesh(source, "source", rep.repairs);
-  PrepareMesh(target, "target", rep.repairs);
-  rep.steps = options.steps;
-  rep.alpha = options.alpha;
-  rep.anchors = int(anchors.size());
-  rep.threads = omp_get_max_threads();
-  rep.solver = options.solver == VelocitySolver::Method::Multigrid           ? "multigrid-preconditioned conjugate gradients"
-               : options.solver == VelocitySolver::Method::ConjugateGradient ? "block-Jacobi-preconditioned conjugate gradients"
-                                                                             : "Gauss-Seidel (red-black)";
-  rep.sourceVertices = source.vn;
-  rep.placement = DescribePlacement(anchors, options.align);
-
-  // Placement P of the target in the source's frame (placement.h).
+// The meshes as the pipeline uses them: private, repaired copies (input.h), the target placed
+// in the source's frame (placement.h), the anchors a_i on the source and b_i placed.
+struct Meshes {
+  Mesh source, target, placed;
+  Similarity place;
   std::vector<Point3> a, b;
-  for (const AnchorPair &p : anchors) a.push_back(p.source), b.push_back(p.target);
-  const Similarity place = FitPlacement(source, target, b, a, options.align);
-  Mesh placed;
-  CopyMesh(placed, target);
-  Transform(placed, place);
-  std::vector<Point3> bPlaced;
-  for (const Point3 &p : b) bPlaced.push_back(place.Apply(p));
+  Topology sourceTopology;                 // the source mesh's own, seams as boundaries (topology.h)
+  Topology sourceSurface, targetSurface;  // the surfaces the meshes describe (MeasureSurfaceTopology)
+};
 
-  // Grid over both (grid.h).
-  Box3 box = source.bbox;
-  box.Add(placed.bbox);
+void PrepareMeshes(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
+                   const Options &options, Meshes &m, Report &rep) {
+  CopyMesh(m.source, sourceIn);
+  CopyMesh(m.target, targetIn);
+  PrepareMesh(m.source, "source", rep.repairs);
+  PrepareMesh(m.target, "target", rep.repairs);
+  std::vector<Point3> b;
+  for (const AnchorPair &p : anchors) m.a.push_back(p.source), b.push_back(p.target);
+  m.place = FitPlacement(m.source, m.target, b, m.a, options.align);
+  CopyMesh(m.placed, m.target);
+  Transform(m.placed, m.place);
+  for (const Point3 &p : b) m.b.push_back(m.place.Apply(p));
+  m.sourceTopology = MeasureTopology(m.source);
+  m.sourceSurface = MeasureSurfaceTopology(m.source);
+  m.targetSurface = MeasureSurfaceTopology(m.placed);
+}
+
+// The grid over both meshes (grid.h), refused before anything large is allocated when the
+// run would not fit (memory.h).
+Grid ChooseGrid(const Meshes &m, const Options &options, std::size_t samples) {
+  Box3 box = m.source.bbox;
+  box.Add(m.placed.bbox);
   const Grid grid = options.gridNodes == vcg::Point3i(0, 0, 0) ? Grid::Enclosing(box, options.gridResolution)
                                                                 : Grid::WithNodes(box, options.gridNodes);
-  const std::size_t pointCount = source.vert.size() * 2 + a.size() + samples.size();  // surgery may add as many
+  const std::size_t pointCount = m.source.vert.size() * 2 + m.a.size() + samples;  // surgery may add as many
   const std::size_t need = RunBytes(grid.NodeCount(), pointCount), room = AvailableBytes();
   if (need > room)
     throw Error("grid_resolution " + std::to_string(options.gridResolution) + ": the grid would have " +
                 std::to_string(grid.NodeCount()) + " nodes and the run about " + std::to_string(need >> 20) +
                 " MiB, but this process may have only " + std::to_string(room >> 20) +
                 " MiB more: lower grid_resolution (memory grows with its cube)");
-  rep.gridNodes = grid.dims;
-  rep.cellSize = grid.h;
+  return grid;
+}
 
-  // SDF: f0, f1 (sdf.h).
-  report(0.0, "signed distance fields");
-  auto t0 = Clock::now();
+// SDF: f0 and f1 (sdf.h), and their gradients for HermiteFields (hermite_field.h): f1's for
+// the last pull-back, f0's only for the samples' levels.
+struct Fields {
+  ScalarField f0, f1;
+  VectorField gradient0, gradient1;
+};
+
+Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels) {
+  Fields s;
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
   // fields are made side by side.
-  ScalarField f0, f1;
-  VectorField gradient0, gradient1;  // for HermiteFields (hermite_field.h): samples' levels, last pull-back
 #pragma omp parallel sections
   {
 #pragma omp section
-    f0 = SignedDistance(source, grid, samples.empty() ? nullptr : &gradient0);
+    s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr);
 #pragma omp section
-    f1 = SignedDistance(placed, grid, &gradient1);
+    s.f1 = SignedDistance(m.placed, grid, &s.gradient1);
   }
-  rep.times.sdf = Seconds(t0);
-  RequireInside(f0, "source");
-  RequireInside(f1, "target");
+  RequireInside(s.f0, "source");
+  RequireInside(s.f1, "target");
+  return s;
+}
 
-  // INT set-up: anchors' interpolation (morph.h).
-  t0 = Clock::now();
-  const Morph morph(f0, f1, a, bPlaced);
-  rep.morphMode = morph.Describe();
+// Tracked points: the source's vertices, then the anchors a_i, then the samples. Levels
+// (tracker.h): the vertices and the anchors lie on the source, so on f = 0; a sample follows
+// the level of f0 where it starts (0 up to the field's error on the surface).
+Tracker StartTracking(const Meshes &m, const Fields &fields, const std::vector<Point3> &samples) {
+  std::vector<Point3> points;
+  points.reserve(m.source.vert.size() + m.a.size() + samples.size());
+  for (const Vertex &v : m.source.vert) points.push_back(v.cP());
+  points.insert(points.end(), m.a.begin(), m.a.end());
+  points.insert(points.end(), samples.begin(), samples.end());
+  std::vector<double> levels(points.size(), 0.0);
+  if (!samples.empty()) {
+    const HermiteField start(fields.f0, fields.gradient0);
+    for (std::size_t n = points.size() - samples.size(); n < points.size(); ++n) levels[n] = start.Value(points[n]);
+  }
+  return Tracker(std::move(points), std::move(levels));
+}
+
+// The step loop: for k = 0 .. K-1, the frame f(., t_k+1) (INT, Eq. 1), the velocity V_k (VF,
+// Eqs. 2-5), every tracked point one step through it (DEF, Eq. 7), and surgery at the step's
+// planned events (surgery.h; V_k's saddles only orient its cuts). Then the last pull-back
+// onto f1 read with sub-cell accuracy.
+void Deform(const Morph &morph, const Fields &fields, const Options &options, const Grid &grid, Tracker &tracker,
+            Surgery &surgery, Report &rep, const Stage &stage) {
+  auto t0 = Clock::now();
   ScalarField fCur, fNext;
   morph.Frame(0, fCur);
   rep.times.interp += Seconds(t0);
-
-  // Tracked points: the source's vertices, then the anchors a_i, then the samples.
-  std::vector<Point3> points;
-  points.reserve(source.vert.size() + a.size() + samples.size());
-  for (const Vertex &v : source.vert) points.push_back(v.cP());
-  points.insert(points.end(), a.begin(), a.end());
-  points.insert(points.end(), samples.begin(), samples.end());
-  // Levels (tracker.h): the vertices and the anchors lie on the source, so on f = 0; a
-  // sample follows the level of f0 where it starts (0 up to the field's error on the surface).
-  std::vector<double> levels(points.size(), 0.0);
-  if (!samples.empty()) {
-    const HermiteField start(f0, gradient0);
-    for (std::size_t n = points.size() - samples.size(); n < points.size(); ++n) levels[n] = start.Value(points[n]);
-  }
-  gradient0 = VectorField();
-  Tracker tracker(std::move(points), std::move(levels));
-  const Topology sourceTopology = MeasureTopology(source);
-  Surgery surgery(source, options.holeRadius * grid.h, grid.h);  // surgery.h
-
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
   VectorField V, anchorMotion;
   ScalarField anchorWeight;
   const double dt = 1.0 / options.steps;
-  InsideSetTracker insideSet(fCur);  // the topology of {f(., t) < 0}, step by step (zero_set_topology.h)
-  auto frameTopology = [&](int step) {
-    const ZeroSetTopology t = insideSet.Topology();
-    return TopologyFrame{step, t.components, t.Handles(), t.cavities};
-  };
-  rep.topologyAlongMorph.push_back(frameTopology(-1));
   for (int k = 0; k < options.steps; ++k) {
-    report(0.1 + 0.8 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
+    stage(0.15 + 0.75 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
     t0 = Clock::now();
     morph.Frame((k + 1) * dt, fNext);  // INT: f(., t_k+1), Eq. 1
     if (options.anchorWeight > 0) {  // the prior of velocity.h: beta_i = anchorWeight * closeness
@@ -292,37 +283,110 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     rep.solverFigures.maxFinalResidual = std::max(rep.solverFigures.maxFinalResidual, s.residual);
     t0 = Clock::now();
     tracker.Advance(V, fNext, dt);  // DEF: Eq. 7
-    surgery.AdvanceAddedPoints(V, fNext, dt);
-    // Topology events: where {f < 0} changes between the frames, exact from f (zero_set_topology.h).
-    const std::vector<TopologyEvent> events = insideSet.Advance(fNext, k);
-    if (!events.empty()) {
-      rep.topologyEvents.insert(rep.topologyEvents.end(), events.begin(), events.end());
-      const TopologyFrame now = frameTopology(k), &last = rep.topologyAlongMorph.back();
-      if (now.components != last.components || now.handles != last.handles || now.cavities != last.cavities)
-        rep.topologyAlongMorph.push_back(now);
-    }
-    // Surgery at the events the tracked surface takes part in (surgery.h); V_k's saddles
-    // only orient the cuts (cut_axis.h).
-    const bool cuts = std::any_of(events.begin(), events.end(), [](const TopologyEvent &e) { return ShapeOf(e.kind) != CutShape::None; });
-    surgery.Step(events, cuts ? FindSaddles(V) : std::vector<Saddle>(), fNext, tracker.Points());
+    surgery.Step(k, surgery.Acts(k) ? FindSaddles(V) : std::vector<Saddle>(), fNext, tracker);
     rep.times.deform += Seconds(t0);
     std::swap(fCur, fNext);
   }
   t0 = Clock::now();
-  const HermiteField targetField(f1, gradient1);
-  tracker.Settle(targetField);
-  surgery.Settle(targetField);
+  tracker.Settle(HermiteField(fields.f1, fields.gradient1));
+  rep.times.deform += Seconds(t0);
+}
+
+// The cut a continuous map needs (topology.h, NeededCut), where each mesh's surface is the
+// boundary of its field's inside set (f0's, f1's): not for self-intersecting parts, shells
+// inside shells, or parts the grid breaks or merges (thinner than about two cells: the cow's
+// legs at 64 cells).
+void PredictCut(const Meshes &m, Report &rep) {
+  const TopologyFrame &first = rep.topologyAlongMorph.front(), &last = rep.topologyAlongMorph.back();
+  auto shape = [](int parts, int genus) {
+    return std::to_string(parts) + (parts == 1 ? " part" : " parts") + " of genus " + std::to_string(genus);
+  };
+  const Topology &source = m.sourceSurface, &target = m.targetSurface;
+  if (source.components != first.components || source.Genus() != first.handles)
+    rep.cutNotChecked = "the source mesh (" + shape(source.components, source.Genus()) +
+                        ") is not the boundary of its inside at this grid (" + shape(first.components, first.handles) +
+                        "): self-intersecting parts, shells inside shells, or parts thinner than about two cells";
+  else if (target.components != last.components || target.Genus() != last.handles)
+    rep.cutNotChecked = "the target at this grid (" + shape(last.components, last.handles) + ") is not the target "
+                        "mesh (" + shape(target.components, target.Genus()) + "): parts that intersect "
+                        "each other, or parts thinner than about two cells that the grid breaks apart or merges "
+                        "(raise grid_resolution for those)";
+  rep.cutPredicted = rep.cutNotChecked.empty();
+  if (!rep.cutPredicted) return;
+  const Topology needed = NeededCut(m.sourceTopology, last.components - first.components, last.handles - first.handles);
+  rep.neededComponents = needed.components;
+  rep.neededBoundaryLoops = needed.boundaryLoops;
+  rep.neededEulerCharacteristic = needed.eulerCharacteristic;
+}
+
+} // namespace
+
+void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
+                const Options &options, Result &result, const Progress &progress, const std::vector<Point3> &samples) {
+  if (&sourceIn == &targetIn) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
+  options.Validate();
+  CheckAnchors(anchors);
+  for (std::size_t n = 0; n < samples.size(); ++n)
+    if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
+      throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
+  const ThreadScope threads(options.threads);
+  const Stage stage = [&](double share, const std::string &name) {
+    if (progress && !progress(share, name)) throw Error("cancelled");
+  };
+  Report &rep = result.report;
+  rep = Report();
+  rep.steps = options.steps;
+  rep.alpha = options.alpha;
+  rep.anchors = int(anchors.size());
+  rep.threads = omp_get_max_threads();
+  rep.solver = options.solver == VelocitySolver::Method::Multigrid           ? "multigrid-preconditioned conjugate gradients"
+               : options.solver == VelocitySolver::Method::ConjugateGradient ? "block-Jacobi-preconditioned conjugate gradients"
+                                                                             : "Gauss-Seidel (red-black)";
+  rep.placement = DescribePlacement(anchors, options.align);
+
+  stage(0.0, "checking the meshes");
+  Meshes m;
+  PrepareMeshes(sourceIn, targetIn, anchors, options, m, rep);
+  rep.sourceVertices = m.source.vn;
+  const Grid grid = ChooseGrid(m, options, samples.size());
+  rep.gridNodes = grid.dims;
+  rep.cellSize = grid.h;
+
+  stage(0.0, "signed distance fields");
+  auto t0 = Clock::now();
+  Fields fields = SignedDistanceFields(m, grid, !samples.empty());
+  rep.times.sdf = Seconds(t0);
+
+  t0 = Clock::now();
+  const Morph morph(fields.f0, fields.f1, m.a, m.b);  // INT set-up: the anchors' interpolation (morph.h)
+  rep.morphMode = morph.Describe();
+  rep.times.interp += Seconds(t0);
+
+  // Where {f(., t) < 0} changes topology along the whole morph (morph_topology.h), and which of
+  // those events surgery acts on (surgery_plan.h).
+  t0 = Clock::now();
+  TopologyHistory history =
+      TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
+  const std::vector<EventCut> plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(),
+                                                 m.sourceSurface, m.targetSurface, grid.h, options.steps);
+  rep.topologyAlongMorph = std::move(history.frames);
+  rep.topologyEvents = std::move(history.events);
   rep.times.deform += Seconds(t0);
 
+  Tracker tracker = StartTracking(m, fields, samples);
+  fields.gradient0 = VectorField();
+  Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan);  // surgery.h
+  Deform(morph, fields, options, grid, tracker, surgery, rep, stage);
+
   // Images on the placed target: measure, then project onto the target mesh itself.
-  report(0.9, "measuring the map");
+  stage(0.9, "measuring the map");
   t0 = Clock::now();
-  const ClosestPoint placedIndex(placed);
-  const double diag = placed.bbox.Diag();
+  const ClosestPoint placedIndex(m.placed);
+  const double diag = m.placed.bbox.Diag();
   const std::vector<Point3> &tracked = tracker.Points();
   // The cut source (surgery.h), and the images of its vertices.
   Mesh &cut = result.cut;
-  const std::vector<Point3> images = surgery.Build(source, tracked, cut, rep.surgery);
+  const std::vector<Point3> images = surgery.Build(m.source, tracked, cut, rep.surgery);
   if (cut.fn == 0)
     throw Error("surgery removed every face of the source (" + std::to_string(rep.HolesCut()) +
                 " holes cut): lower hole_radius, or raise grid_resolution so the parts that change are several "
@@ -332,21 +396,22 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   std::vector<ClosestHit> hits(images.size());
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(images.size()); ++n) hits[n] = placedIndex.Query(images[n]);
-  for (std::size_t n = 0; n < a.size(); ++n) {
+  const std::size_t vertices = m.source.vert.size();
+  for (std::size_t n = 0; n < m.a.size(); ++n) {
     AnchorFigure figure;
     figure.name = anchors[n].name;
-    figure.error = vcg::Distance(placedIndex.Query(tracked[source.vert.size() + n]).point, bPlaced[n]) / grid.h;
-    figure.sourceLevel = f0.Value(a[n]) / grid.h;
-    figure.targetLevel = f1.Value(bPlaced[n]) / grid.h;
+    figure.error = vcg::Distance(placedIndex.Query(tracked[vertices + n]).point, m.b[n]) / grid.h;
+    figure.sourceLevel = fields.f0.Value(m.a[n]) / grid.h;
+    figure.targetLevel = fields.f1.Value(m.b[n]) / grid.h;
     rep.quality.anchorErrorCells = std::max(rep.quality.anchorErrorCells, figure.error);
     rep.quality.anchorFigures.push_back(figure);
   }
 
   // Outputs: cut (source with TargetPosition), mapped (vertices at their images).
-  const Similarity back = place.Inverse();
+  const Similarity back = m.place.Inverse();
   result.sampleImages.clear();
   for (std::size_t n = 0; n < samples.size(); ++n)
-    result.sampleImages.push_back(back.Apply(tracked[source.vert.size() + a.size() + n]));
+    result.sampleImages.push_back(back.Apply(tracked[vertices + m.a.size() + n]));
   auto targetPosition = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   for (std::size_t n = 0; n < cut.vert.size(); ++n) targetPosition[n] = back.Apply(hits[n].point);
 
@@ -356,9 +421,9 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   mapped.Clear();
   CopyMesh(mapped, cut);
   for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
-  const ClosestPoint targetIndex(target);
+  const ClosestPoint targetIndex(m.target);
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
-  report(0.93, "untangling the map");
+  stage(0.93, "untangling the map");
   if (options.untangle) {
     rep.untangledVertices = Untangle(mapped, targetIndex);
     for (std::size_t n = 0; n < mapped.vert.size(); ++n) targetPosition[n] = mapped.vert[n].cP();
@@ -369,12 +434,12 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.quality.meanDistortion = StoreDistortion(cut, mapped);  // the cut's vertex quality, unless pulled below
 
   // The inverse method (transfer.h): the cut reads the target at the final images.
-  report(0.96, "pulling the target's attributes");
+  stage(0.96, "pulling the target's attributes");
   std::vector<ClosestHit> onTarget(mapped.vert.size());
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(mapped.vert.size()); ++n) onTarget[n] = targetIndex.Query(mapped.vert[n].cP());
   if (options.transferTexture) {
-    const TexCoordPull pull = PullTexCoords(cut, target, onTarget);
+    const TexCoordPull pull = PullTexCoords(cut, m.target, onTarget);
     rep.texture = pull.from == TexCoordKind::None ? "none pulled (the target has no texture coordinates)"
                   : std::string("pulled per wedge from the target's per-") +
                         (pull.from == TexCoordKind::PerWedge ? "wedge" : "vertex") + " coordinates; " +
@@ -386,43 +451,20 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     PullVertexAttributes(cut, onTarget, options.transferColour, options.transferQuality);
   if (options.fillHoles) FillHoles(cut, result.filled);
 
-  rep.quality.coverage = Coverage(target, mapped, 0.02 * target.bbox.Diag(), &rep.quality.uncoveredParts);
+  rep.quality.coverage = Coverage(m.target, mapped, 0.02 * m.target.bbox.Diag(), &rep.quality.uncoveredParts);
   rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
-  rep.quality.longestEdgeCells = LongestEdge(mapped) * place.scale / grid.h;
+  rep.quality.longestEdgeCells = LongestEdge(mapped) * m.place.scale / grid.h;
   const Topology topo = MeasureTopology(cut);
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;
   rep.cutEulerCharacteristic = topo.eulerCharacteristic;
-  // The prediction holds where each mesh's surface is the boundary of its field's inside set
-  // (f0's, f1's): not for self-intersecting parts, shells inside shells, or parts the grid
-  // breaks or merges (thinner than about two cells: the cow's legs at 64 cells).
-  const TopologyFrame &first = rep.topologyAlongMorph.front(), &last = rep.topologyAlongMorph.back();
-  const Topology targetTopology = MeasureTopology(placed);
-  auto shape = [](int parts, int genus) {
-    return std::to_string(parts) + (parts == 1 ? " part" : " parts") + " of genus " + std::to_string(genus);
-  };
-  if (sourceTopology.components != first.components || sourceTopology.Genus() != first.handles)
-    rep.cutNotChecked = "the source mesh (" + shape(sourceTopology.components, sourceTopology.Genus()) +
-                        ") is not the boundary of its inside at this grid (" + shape(first.components, first.handles) +
-                        "): self-intersecting parts, shells inside shells, or parts thinner than about two cells";
-  else if (targetTopology.components != last.components || targetTopology.Genus() != last.handles)
-    rep.cutNotChecked = "the target at this grid (" + shape(last.components, last.handles) + ") is not the target "
-                        "mesh (" + shape(targetTopology.components, targetTopology.Genus()) + "): parts that intersect "
-                        "each other, or parts thinner than about two cells that the grid breaks apart or merges "
-                        "(raise grid_resolution for those)";
-  rep.cutPredicted = rep.cutNotChecked.empty();
-  if (rep.cutPredicted) {
-    const Topology needed = NeededCut(sourceTopology, last.components - first.components, last.handles - first.handles);
-    rep.neededComponents = needed.components;
-    rep.neededBoundaryLoops = needed.boundaryLoops;
-    rep.neededEulerCharacteristic = needed.eulerCharacteristic;
-  }
+  PredictCut(m, rep);
   rep.cutVertices = cut.vn;
   rep.cutFaces = cut.fn;
-  WarnOnFailure(rep.quality, TestMirror(b, a), back, rep);
+  WarnOnFailure(rep.quality, TestMirror(m.b, m.a), back, rep);
   rep.times.quality = Seconds(t0);
   rep.peakMemoryKiB = PeakMemoryKiB();
-  report(1.0, "done");
+  stage(1.0, "done");
 }
 
 } // namespace eulermap

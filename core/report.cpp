@@ -72,8 +72,12 @@ std::string Report::ToText() const {
                     s.facesRemoved, s.rimLength);
       else if (s.outcome == EventCut::AwayFromSurface)
         o << Format(": not cut, the tracked surface is %.1f cells away (a part no tracked point reaches)", s.distanceCells);
-      else if (s.outcome == EventCut::Cancelled)
-        o << ": not cut, a handle gained and one lost together cancel";
+      else if (s.outcome == EventCut::Undone)
+        o << ": not cut, an opposite event nearby undoes it";
+      else if (s.outcome == EventCut::SourceGrid)
+        o << ": not cut, it removes a feature of the grid's picture of the source that the source mesh has not";
+      else if (s.outcome == EventCut::TargetGrid)
+        o << ": not cut, it makes a feature of the grid's picture of the target that the target mesh has not";
       else if (s.outcome == EventCut::Collapsed)
         o << Format(": the piece of the tracked surface that shrank with it removed, %d faces", s.facesRemoved);
       else if (s.outcome == EventCut::OneSheetTracked)

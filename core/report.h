@@ -68,14 +68,18 @@ struct MapQuality {
   double meanDistortion = 0;    // mean per-vertex distortion (vertex quality of the cut layer)
 };
 
-// What surgery did at one topology event (surgery.h, cut_axis.h).
+// What surgery did at one topology event (surgery_plan.h decides which it acts on, surgery.h
+// and cut_axis.h how).
 enum class EventCut {
+  Planned,          // surgery acts on it at its step (surgery_plan.h); one of the next five after
   Cut,              // the tracked surface was cut there
-  NotACutKind,      // a part or cavity born or dying, a cavity opening: no sheet meets or parts
-  AwayFromSurface,  // no tracked triangle within 6 cells + the hole radius (an untracked part's event)
-  Cancelled,        // a handle gained and one lost at one step and place: no change
   Collapsed,        // a part dying: the piece of the tracked surface that shrank with it was removed
+  NotACutKind,      // a part or cavity born or dying, a cavity filled or opened: no sheet meets or parts
+  AwayFromSurface,  // no tracked triangle within 6 cells + the hole radius (an untracked part's event)
   OneSheetTracked,  // sheets meet, but one side has no tracked face (a part grown from nothing merging)
+  Undone,           // an opposite event nearby soon undid it (surgery_plan.h)
+  SourceGrid,       // f0's inside set has a feature the source mesh has not; this removed it
+  TargetGrid,       // f1's inside set has a feature the target mesh has not; this made it
 };
 struct EventSurgery {
   int event = 0;              // index into Report::topologyEvents

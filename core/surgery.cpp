@@ -70,13 +70,21 @@ double RayTriangle(const Point3 &o, const Point3 &d, const Point3 &a, const Poin
 
 } // namespace
 
-Surgery::Surgery(const Mesh &source, double radius, double cell)
-    : radius_(radius), cell_(cell) {
+Surgery::Surgery(const Mesh &source, double radius, double cell, const std::vector<TopologyEvent> &events,
+                 const std::vector<EventCut> &plan)
+    : radius_(radius), cell_(cell), events_(events) {
+  if (plan.size() != events.size()) throw std::logic_error("Surgery: one plan entry per event");
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    EventSurgery o;
+    o.event = int(e);
+    o.outcome = plan[e];
+    outcomes_.push_back(o);
+  }
   if (source.vn != int(source.vert.size()) || source.fn != int(source.face.size()))
     throw std::logic_error("Surgery: the source has deleted vertices or faces");
   sourceVertices_ = int(source.vert.size());
   sourceFaces_ = int(source.face.size());
-  for (const Vertex &v : source.vert) sourcePosition_.push_back(v.cP());
+  for (const Vertex &v : source.vert) sourcePosition_.push_back(v.cP()), trackedAs_.push_back(trackedAs_.size());
   // Faces, the source's own boundary edges, connected components and their areas.
   std::unordered_map<std::uint64_t, int> edgeUse;
   std::vector<int> parent(sourceVertices_);
@@ -111,36 +119,27 @@ int Surgery::PointsAdded() const {
 }
 
 std::vector<Point3> Surgery::Positions(const std::vector<Point3> &tracked) const {
-  std::vector<Point3> p(tracked.begin(), tracked.begin() + sourceVertices_);
-  for (const std::array<int, 2> &w : trackedBy_) p.push_back(batches_[w[0]].Points()[w[1]]);
+  std::vector<Point3> p;
+  p.reserve(trackedAs_.size());
+  for (std::size_t n : trackedAs_) p.push_back(tracked[n]);
   return p;
 }
 
-void Surgery::AdvanceAddedPoints(const VectorField &V, const ScalarField &fNext, double dt) {
-  for (Tracker &batch : batches_) batch.Advance(V, fNext, dt);
+bool Surgery::Acts(int k) const {
+  for (std::size_t e = next_; e < events_.size() && events_[e].step <= k; ++e)
+    if (events_[e].step == k && outcomes_[e].outcome == EventCut::Planned) return true;
+  return false;
 }
 
-void Surgery::Step(const std::vector<TopologyEvent> &events, const std::vector<Saddle> &saddles,
-                   const ScalarField &fNext, const std::vector<Point3> &tracked) {
-  std::vector<Point3> position = Positions(tracked);
+void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField &fNext, Tracker &tracker) {
+  const std::size_t begin = next_;
+  while (next_ < events_.size() && events_[next_].step <= k) ++next_;
+  std::vector<Point3> position = Positions(tracker.Points());
   std::vector<std::pair<int, Point3>> cutting;  // outcomes that cut at this step, and where
-  // A handle gained and one lost together (one step, within kTakesPartCells) leave the
-  // Betti numbers as they were (zero_set_topology.h): neither is cut.
-  std::vector<char> cancelled(events.size(), 0);
-  for (std::size_t a = 0; a < events.size(); ++a)
-    for (std::size_t b = 0; b < events.size() && events[a].kind == TopologyEventKind::HandleGained && !cancelled[a]; ++b)
-      if (events[b].kind == TopologyEventKind::HandleLost && !cancelled[b] &&
-          vcg::Distance(events[a].position, events[b].position) <= kTakesPartCells * cell_)
-        cancelled[a] = cancelled[b] = 1;
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    const TopologyEvent &event = events[e];
-    EventSurgery outcome;
-    outcome.event = int(outcomes_.size());
-    if (cancelled[e]) {
-      outcome.outcome = EventCut::Cancelled;
-      outcomes_.push_back(outcome);
-      continue;
-    }
+  for (std::size_t e = begin; e < next_; ++e) {
+    EventSurgery &outcome = outcomes_[e];
+    if (outcome.outcome != EventCut::Planned) continue;
+    const TopologyEvent &event = events_[e];
     const CutShape shape = ShapeOf(event.kind);
     const double near = kTakesPartCells * cell_ + radius_;
     // A part dying: the piece of the tracked surface that shrank with it (cut off from the
@@ -148,8 +147,8 @@ void Surgery::Step(const std::vector<TopologyEvent> &events, const std::vector<S
     if (event.kind == TopologyEventKind::ComponentDied) {
       const std::vector<int> piece = CollapsedPiece(event.position, kCollapsedCells * cell_ + radius_, position);
       for (int n : piece) tris_[n].state = outcome.event;
-      if (!piece.empty()) outcome.outcome = EventCut::Collapsed, cutting.push_back({outcome.event, event.position});
-      outcomes_.push_back(outcome);
+      outcome.outcome = piece.empty() ? EventCut::NotACutKind : EventCut::Collapsed;
+      if (!piece.empty()) cutting.push_back({outcome.event, event.position});
       continue;
     }
     // 1. A cut kind, where the tracked surface takes part.
@@ -174,15 +173,10 @@ void Surgery::Step(const std::vector<TopologyEvent> &events, const std::vector<S
         cutting.push_back({outcome.event, event.position});
       }
     }
-    outcomes_.push_back(outcome);
   }
   // 3. Clean the rims; 4. refine them as they open.
   if (!cutting.empty()) Clean(position, cutting);
-  Refine(position, fNext);
-}
-
-void Surgery::Settle(const HermiteField &f1) {
-  for (Tracker &batch : batches_) batch.Settle(f1);
+  Refine(position, fNext, tracker);
 }
 
 double Surgery::NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const {
@@ -403,7 +397,7 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
   }
 }
 
-void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext) {
+void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tracker &tracker) {
   if (std::none_of(tris_.begin(), tris_.end(), [](const Tri &t) { return t.state == kAlive && t.refinable; })) return;
   const double limit = kSplitCells * cell_;
   std::vector<Point3> born;  // tracked positions of the points added at this step
@@ -440,7 +434,7 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext) {
       id = int(sourcePosition_.size());
       sourcePosition_.push_back((sourcePosition_[a] + sourcePosition_[b]) / 2);
       parents_.push_back({a, b});
-      trackedBy_.push_back({int(batches_.size()), int(born.size())});
+      trackedAs_.push_back(tracker.Points().size() + born.size());
       born.push_back(PullBack(fNext, (position[a] + position[b]) / 2, 0));
       position.push_back(born.back());
     }
@@ -503,10 +497,7 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext) {
       }
     }
   }
-  if (!born.empty()) {
-    std::vector<double> onSurface(born.size(), 0.0);  // born on f = 0
-    batches_.emplace_back(std::move(born), std::move(onSurface));
-  }
+  tracker.Add(born, 0);  // born on f = 0
 }
 
 std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &tracked, Mesh &cut,

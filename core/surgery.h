@@ -3,24 +3,22 @@
 // tracking pass, and eulermap::FillHoles.
 //
 // The tracked surface is the source's triangles over the tracked points (the source's
-// vertices, whose trajectories the pipeline's Tracker follows, plus points this class
-// adds). After each step k, for each topology event of {f(., t_k+1) < 0} at that step
-// (zero_set_topology.h: exact, decided from f alone, at a node x):
+// vertices, whose trajectories the pipeline's Tracker follows, and the points this class
+// adds to that Tracker). After each step k, for each event of step k that the plan leaves
+// to surgery (surgery_plan.h: events exact from f, at a node x, zero_set_topology.h):
 //   1. which: the event's kind gives the cut's shape (cut_axis.h): two sheets meeting
 //      (handle gained, parts merged) lose a disc each, a pinching neck (handle lost, part
-//      split) a band; births, deaths and cavities are not cut. The tracked surface takes
-//      part only if some tracked triangle lies within kTakesPartCells + the hole radius of x
-//      (a part grown from nothing, which no tracked point reaches, changes topology far
-//      from every tracked triangle): else the event is reported, not cut (the tracked
-//      sheets lag the level set near a critical point, where V vanishes: 5 to 6 cells at
-//      sphere -> 3holes, 3 at a blob splitting, at grid 48-64). A handle gained and one
-//      lost at one step and place cancel: neither is cut. Where sheets
-//      meet, both must be tracked (step 2 b finds a tracked face on each side): a part
-//      grown from nothing that merges with the surface is reported, not cut. Where a part
-//      dies, the piece of the tracked surface that shrank with it (already cut off by the
-//      events before, and all within kCollapsedCells + the hole radius of the node) maps
-//      onto nothing: it goes (genus 2 -> sphere in the linear blend: the
-//      outer arcs of both loops pinch off and vanish).
+//      split) a band; births and cavities are not cut. The tracked surface takes part only
+//      if some tracked triangle lies within kTakesPartCells + the hole radius of x (a part
+//      grown from nothing, which no tracked point reaches, changes topology far from every
+//      tracked triangle): else the event is reported, not cut (the tracked sheets lag the
+//      level set near a critical point, where V vanishes: 5 to 6 cells at sphere -> 3holes,
+//      3 at a blob splitting, at grid 48-64). Where sheets meet, both must be tracked
+//      (step 2 b finds a tracked face on each side): a part grown from nothing that merges
+//      with the surface is reported, not cut. Where a part dies, the piece of the tracked
+//      surface that shrank with it (already cut off by the events before, and all within
+//      kCollapsedCells + the hole radius of the node) maps onto nothing: it goes (genus 2 ->
+//      sphere in the linear blend: the outer arcs of both loops pinch off and vanish).
 //   2. cut, oriented by the axis d of cut_axis.h (a saddle of V_k near x, else f's Hessian):
 //      (a) the paper's rule: the faces within the hole radius of x, and all faces around a
 //          point inside that sphere (no rim vertex is left where trajectories part);
@@ -63,32 +61,28 @@ namespace eulermap {
 
 class Surgery {
  public:
-  // in: source (no deleted vertices or faces; vertex n is tracked point n), the sphere's
-  //     radius and the grid cell (world units)
-  Surgery(const Mesh &source, double radius, double cell);
-
-  // The added points' trajectories, one step through V_k onto fNext = f(., t_k+1) (Eq. 7),
-  // beside the pipeline's tracker.
-  void AdvanceAddedPoints(const VectorField &V, const ScalarField &fNext, double dt);
+  // in: source (no deleted vertices or faces; vertex n is point n of the pipeline's Tracker),
+  //     the sphere's radius and the grid cell (world units), the morph's events and the plan
+  //     for each (surgery_plan.h: those left Planned are acted on at their step)
+  Surgery(const Mesh &source, double radius, double cell, const std::vector<TopologyEvent> &events,
+          const std::vector<EventCut> &plan);
 
   // One step, once the tracked points have moved to t_k+1.
-  // in:  the step's topology events, the saddles of V_k (only to orient cuts; may be empty),
-  //      fNext = f(., t_k+1), tracked (the source's vertices first, in order)
-  // out: faces cut at the events, the surface cleaned and refined (steps 1-4 above); one
-  //      outcome per event appended to Outcomes()
-  void Step(const std::vector<TopologyEvent> &events, const std::vector<Saddle> &saddles, const ScalarField &fNext,
-            const std::vector<Point3> &tracked);
+  // in:  k; the saddles of V_k (only to orient cuts; may be empty), fNext = f(., t_k+1), the
+  //      tracker (the source's vertices first, in order)
+  // out: faces cut at the step's planned events, the surface cleaned and refined (steps 1-4
+  //      above); the points added appended to tracker; those events' outcomes set
+  void Step(int k, const std::vector<Saddle> &saddles, const ScalarField &fNext, Tracker &tracker);
+  // Whether step k has events to act on (the pipeline looks for V's saddles only then).
+  bool Acts(int k) const;
 
-  // After the last step: the added points' last pull-back (Tracker::Settle).
-  void Settle(const HermiteField &f1);
-
-  // One per event given to Step, in order (faces removed and rim length are filled by Build).
+  // One per event of the morph, in order (faces removed and rim length are filled by Build).
   const std::vector<EventSurgery> &Outcomes() const { return outcomes_; }
   // The added points that faces of the cut source use (those of removed faces are not
   // counted: they are not in the cut).
   int PointsAdded() const;
 
-  // in:  source (as given to the constructor), tracked (the source vertices' final positions)
+  // in:  source (as given to the constructor), tracked (the tracker's final points)
   // out: cut: the source refined where points were added, without the removed faces and the
   //      vertices left without faces; compact; vertex and face data of the source (wedge
   //      texture coordinates, colours, normals, ...) interpolated onto what is new.
@@ -125,7 +119,7 @@ class Surgery {
   // cutting: the outcomes (events) that cut at this step, with their positions
   void Clean(const std::vector<Point3> &position, const std::vector<std::pair<int, Point3>> &cutting);
   // position: every point's tracked position, extended with the points added
-  void Refine(std::vector<Point3> &position, const ScalarField &fNext);
+  void Refine(std::vector<Point3> &position, const ScalarField &fNext, Tracker &tracker);
 
   double radius_, cell_;
   int sourceVertices_ = 0, sourceFaces_ = 0;
@@ -134,8 +128,9 @@ class Surgery {
   std::vector<double> componentArea_;           // per component of the source, its area
   std::vector<Point3> sourcePosition_;          // per point: where it lies on the source
   std::vector<std::array<int, 2>> parents_;     // per added point: the edge it splits
-  std::vector<std::array<int, 2>> trackedBy_;   // per added point: (batch, index in batch)
-  std::vector<Tracker> batches_;                // trajectories of the added points
+  std::vector<std::size_t> trackedAs_;          // per point: its index in the pipeline's Tracker
+  std::vector<TopologyEvent> events_;           // the morph's, in order
+  std::size_t next_ = 0;                        // the first event of a step not yet seen
 };
 
 // in:  cut (after surgery)

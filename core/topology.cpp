@@ -2,6 +2,8 @@
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/append.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -25,6 +27,16 @@ Topology MeasureTopology(Mesh &m) {
   const int vertices = int(std::count(used.begin(), used.end(), true));
   t.eulerCharacteristic = vertices - edges + faces;
   return t;
+}
+
+Topology MeasureSurfaceTopology(const Mesh &m) {
+  Mesh surface;
+  // vcglib 2020.09's Append takes the mesh it reads as non-const; it only reads it.
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(surface, const_cast<Mesh &>(m), false, false);
+  vcg::tri::UpdateBounding<Mesh>::Box(surface);
+  vcg::tri::Clean<Mesh>::MergeCloseVertex(surface, kSamePlace * surface.bbox.Diag());  // sin(2 pi) is not 0
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(surface);
+  return MeasureTopology(surface);
 }
 
 Topology NeededCut(const Topology &source, int componentChange, int handleChange) {

@@ -18,6 +18,13 @@ struct Topology {
 // Updates m's face-face topology.
 Topology MeasureTopology(Mesh &m);
 
+// The topology of the surface m describes: as MeasureTopology on a copy whose vertices at
+// one place (within kSamePlace of its diagonal) are one. A seam of per-vertex texture
+// coordinates or normals splits a closed torus into a square with one boundary loop; its
+// surface is still a torus.
+constexpr double kSamePlace = 1e-9;
+Topology MeasureSurfaceTopology(const Mesh &m);
+
 // The cut source a continuous map needs (DESIGN.md: expected topology after surgery), from
 // the source's own topology and the changes of the inside set's components and handles
 // from f(., 0) to f(., 1) (zero_set_topology.h). Each handle gained costs two discs (two

@@ -41,6 +41,13 @@ Point3 PullBack(const HermiteField &f, Point3 p, double level) {
                     p, level);
 }
 
+std::size_t Tracker::Add(const std::vector<Point3> &points, double level) {
+  const std::size_t first = points_.size();
+  points_.insert(points_.end(), points.begin(), points.end());
+  levels_.resize(points_.size(), level);
+  return first;
+}
+
 void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt) {
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < long(points_.size()); ++n) {

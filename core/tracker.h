@@ -33,6 +33,9 @@ class Tracker {
   // HermiteField.
   void Settle(const HermiteField &f1);
 
+  // Appends points (each on its level) to be tracked from now on; returns the index of the first.
+  std::size_t Add(const std::vector<Point3> &points, double level);
+
   const std::vector<Point3> &Points() const { return points_; }
   const std::vector<double> &Levels() const { return levels_; }
 

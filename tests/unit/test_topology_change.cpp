@@ -235,13 +235,16 @@ TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
   const double cell = g.h;
   Mesh sphere;
   MakeSphere(sphere, g.Node(7, 7, 7), 0.3, 3);  // 2.25 cells from its centre
-  std::vector<Point3> tracked;
-  for (const Vertex &v : sphere.vert) tracked.push_back(v.cP());
+  std::vector<Point3> points;
+  for (const Vertex &v : sphere.vert) points.push_back(v.cP());
+  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
   const ScalarField f = Quadric(g, g.Node(7, 7, 7), Point3(-1, -1, 1));  // a membrane through the centre, normal z
-  Surgery surgery(sphere, cell, cell);
-  surgery.Step({EventAt(g, {14, 14, 14}, TopologyEventKind::HandleGained),  // 7 cells away
-                EventAt(g, {7, 7, 7}, TopologyEventKind::ComponentBorn), EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)},
-               {}, f, tracked);
+  const std::vector<TopologyEvent> events = {EventAt(g, {14, 14, 14}, TopologyEventKind::HandleGained),  // 7 cells away
+                                             EventAt(g, {7, 7, 7}, TopologyEventKind::ComponentBorn),
+                                             EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)};
+  Surgery surgery(sphere, cell, cell, events, std::vector<EventCut>(events.size(), EventCut::Planned));
+  EXPECT_TRUE(surgery.Acts(0));
+  surgery.Step(0, {}, f, tracker);
   ASSERT_EQ(surgery.Outcomes().size(), 3u);
   EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
   EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::NotACutKind);
@@ -249,7 +252,7 @@ TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
   EXPECT_FALSE(surgery.Outcomes()[2].axisFromSaddle);
   Mesh cut;
   std::vector<EventSurgery> outcomes;
-  surgery.Build(sphere, tracked, cut, outcomes);
+  surgery.Build(sphere, tracker.Points(), cut, outcomes);
   EXPECT_GT(outcomes[2].facesRemoved, 0);
   EXPECT_GT(outcomes[2].rimLength, 0);
   const Topology t = MeasureTopology(cut);  // both poles along z go: an annulus (sphere -> torus)
@@ -266,16 +269,17 @@ TEST(Surgery, PinchingNeckLosesABand) {
   const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
   Mesh torus;
   MakeTorus(torus, g.Node(7, 7, 7), 0.55, 0.2);
-  std::vector<Point3> tracked;
-  for (const Vertex &v : torus.vert) tracked.push_back(v.cP());
+  std::vector<Point3> points;
+  for (const Vertex &v : torus.vert) points.push_back(v.cP());
+  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
   const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
   const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
-  Surgery surgery(torus, g.h, g.h);
-  surgery.Step({EventAt(g, node, TopologyEventKind::HandleLost)}, {}, f, tracked);
+  Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned});
+  surgery.Step(0, {}, f, tracker);
   ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
   Mesh cut;
   std::vector<EventSurgery> outcomes;
-  surgery.Build(torus, tracked, cut, outcomes);
+  surgery.Build(torus, tracker.Points(), cut, outcomes);
   const Topology t = MeasureTopology(cut);  // a cylinder
   EXPECT_EQ(t.components, 1);
   EXPECT_EQ(t.boundaryLoops, 2);
