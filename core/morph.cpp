@@ -9,6 +9,8 @@
 // q_i(t) -> b_i. Otherwise both warps are the identity (a plain linear blend).
 #include "morph.h"
 
+#include "grow_shrink.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -172,6 +174,7 @@ struct Morph::Impl {
   std::vector<Point3> a, b;
   Mode mode = Mode::LinearBlend;
   std::string reason;  // why the linear blend was chosen
+  std::unique_ptr<GrowShrink> growShrink;  // Mode::GrowShrink
 
   // ARAP data, all from the source tetrahedra (Alexa et al. 2000).
   struct Tet {
@@ -483,7 +486,7 @@ std::shared_ptr<const WarpPair> Morph::Impl::Warps(double t) const {
 //   a, b:    matched anchors, a[i] on the source and b[i] on the placed target
 // Throws std::invalid_argument on grids that differ, anchor lists of different lengths,
 // or coincident anchors (with 4 or more non-coplanar ones).
-Morph::Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b)
+Morph::Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b, Blend blend)
     : impl_(std::make_unique<Impl>()) {
   if (f0.grid.dims != f1.grid.dims || f0.grid.origin != f1.grid.origin || f0.grid.h != f1.grid.h ||
       f0.values.size() != f0.grid.NodeCount() || f1.values.size() != f1.grid.NodeCount())
@@ -496,6 +499,10 @@ Morph::Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a
   impl_->a = std::move(a);
   impl_->b = std::move(b);
   impl_->Setup();
+  if (impl_->mode == Mode::LinearBlend && blend == Blend::GrowShrink) {
+    impl_->growShrink = std::make_unique<GrowShrink>(f0, f1);
+    impl_->mode = Mode::GrowShrink;
+  }
 }
 
 Morph::~Morph() = default;
@@ -506,6 +513,13 @@ Morph::Mode Morph::mode() const { return impl_->mode; }
 std::string Morph::Describe() const {
   const Impl &m = *impl_;
   if (m.mode == Mode::LinearBlend) return "linear blend (" + m.reason + ")";
+  if (m.mode == Mode::GrowShrink) {
+    std::ostringstream s;
+    s << "grow then withdraw (" << m.reason << "; the linear blend grows parts from nothing): the source grows "
+      << m.growShrink->GrowLength() << " into the target, then withdraws " << m.growShrink->WithdrawLength()
+      << ", switching at t = " << m.growShrink->Switch();
+    return s.str();
+  }
   std::ostringstream s;
   s << "ARAP+TPS, " << m.a.size() << " anchors, " << m.tets.size() << " tetrahedra";
   if (m.sampled)
@@ -528,6 +542,7 @@ void Morph::Frame(double t, ScalarField &out) const {
   out.values.resize(g.NodeCount());
   const long long count = (long long)g.NodeCount();
 
+  if (impl_->mode == Mode::GrowShrink) return impl_->growShrink->Frame(t, out);
   if (impl_->mode == Mode::LinearBlend) {  // W = identity
 #pragma omp parallel for schedule(static)
     for (long long i = 0; i < count; ++i) {
@@ -579,7 +594,7 @@ std::vector<Point3> Morph::Anchors(double t) const {
 // W_t->0(p): the thin-plate warp with W_t->0(q_i(t)) = a_i (identity in linear-blend
 // mode and at t = 0). Thread-safe; solves (or reuses the last solve of) time t.
 Point3 Morph::WarpToSource(double t, const Point3 &p) const {
-  if (impl_->mode == Mode::LinearBlend) return p;
+  if (impl_->mode != Mode::ArapTps) return p;
   Point3 p0, p1;
   impl_->Warps(t)->Evaluate(p, p0, p1);
   return p0;
@@ -588,7 +603,7 @@ Point3 Morph::WarpToSource(double t, const Point3 &p) const {
 // W_t->1(p): the thin-plate warp with W_t->1(q_i(t)) = b_i (identity in linear-blend
 // mode and at t = 1). Thread-safe, as WarpToSource.
 Point3 Morph::WarpToTarget(double t, const Point3 &p) const {
-  if (impl_->mode == Mode::LinearBlend) return p;
+  if (impl_->mode != Mode::ArapTps) return p;
   Point3 p0, p1;
   impl_->Warps(t)->Evaluate(p, p0, p1);
   return p1;
@@ -598,7 +613,7 @@ Point3 Morph::WarpToTarget(double t, const Point3 &p) const {
 // as a velocity (W(p) - p) / (t1 - t0) at every grid node, with each node's closeness
 // to the anchors. Empty (no nodes) in linear-blend mode, where anchors do not move space.
 void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, ScalarField &closeness) const {
-  if (impl_->mode == Mode::LinearBlend) {
+  if (impl_->mode != Mode::ArapTps) {
     out = VectorField();
     closeness = ScalarField();
     return;

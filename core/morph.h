@@ -11,6 +11,9 @@
 //     q(t) the least-squares fit of all A(t), centroid interpolated linearly), and
 //     thin-plate (phi(r) = r, plus affine part) warps W_t->0, W_t->1 with
 //     W_t->0(q_i(t)) = a_i and W_t->1(q_i(t)) = b_i.
+// Without a warp (fewer than 4 anchors), Blend::GrowShrink replaces the linear blend with
+// grow_shrink.h's morph, in which no part grows from nothing (the pipeline asks for it when
+// the linear blend would grow one).
 #pragma once
 
 #include "field.h"
@@ -23,11 +26,13 @@ namespace eulermap {
 
 class Morph {
  public:
-  enum class Mode { LinearBlend, ArapTps };
+  enum class Mode { LinearBlend, ArapTps, GrowShrink };
+  enum class Blend { Linear, GrowShrink };  // what to do where no warp is built
 
   // f0, f1 on the same grid; anchors as matched lists (a[i] <-> b[i]), b already placed.
   // f0 and f1 are not copied: they must outlive the Morph.
-  Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b);
+  Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a, std::vector<Point3> b,
+        Blend blend = Blend::Linear);
   ~Morph();
 
   Mode mode() const;

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 
 namespace eulermap {
 
@@ -166,6 +167,19 @@ std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align alig
   return align == Align::None ? "none (target as it is)" : "centre-and-scale (centroid and bounding-box diagonal)";
 }
 
+// Whether the morph grows a part from nothing (a birth the grid's picture of the target does
+// not explain, even one that merges with the surface soon after) or shrinks one into nothing
+// that surgery would act on (surgery_plan.h).
+bool GrowsFromNothing(const std::vector<TopologyEvent> &events, const std::vector<EventCut> &plan) {
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    const bool grid = plan[e] == EventCut::SourceGrid || plan[e] == EventCut::TargetGrid;
+    if ((events[e].kind == TopologyEventKind::ComponentBorn && !grid) ||
+        (events[e].kind == TopologyEventKind::ComponentDied && plan[e] == EventCut::Planned))
+      return true;
+  }
+  return false;
+}
+
 using Stage = std::function<void(double, const std::string &)>;  // progress; throws Error to cancel
 
 // The meshes as the pipeline uses them: private, repaired copies (input.h), the target placed
@@ -202,7 +216,7 @@ Grid ChooseGrid(const Meshes &m, const Options &options, std::size_t samples) {
   box.Add(m.placed.bbox);
   const Grid grid = options.gridNodes == vcg::Point3i(0, 0, 0) ? Grid::Enclosing(box, options.gridResolution)
                                                                 : Grid::WithNodes(box, options.gridNodes);
-  const std::size_t pointCount = m.source.vert.size() * 2 + m.a.size() + samples;  // surgery may add as many
+  const std::size_t pointCount = m.source.vert.size() * (1 + kAddedPerVertex) + m.a.size() + samples;  // surgery.h
   const std::size_t need = RunBytes(grid.NodeCount(), pointCount), room = AvailableBytes();
   if (need > room)
     throw Error("grid_resolution " + std::to_string(options.gridResolution) + ": the grid would have " +
@@ -357,26 +371,33 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   Fields fields = SignedDistanceFields(m, grid, !samples.empty());
   rep.times.sdf = Seconds(t0);
 
-  t0 = Clock::now();
-  const Morph morph(fields.f0, fields.f1, m.a, m.b);  // INT set-up: the anchors' interpolation (morph.h)
-  rep.morphMode = morph.Describe();
-  rep.times.interp += Seconds(t0);
-
-  // Where {f(., t) < 0} changes topology along the whole morph (morph_topology.h), and which of
-  // those events surgery acts on (surgery_plan.h).
-  t0 = Clock::now();
-  TopologyHistory history =
-      TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
-  const std::vector<EventCut> plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(),
-                                                 m.sourceSurface, m.targetSurface, grid.h, options.steps);
+  // The morph (morph.h), where {f(., t) < 0} changes topology along it (morph_topology.h), and
+  // which of those events surgery acts on (surgery_plan.h). Where the linear blend would grow
+  // a part from nothing or shrink one into nothing, the morph grows and withdraws instead
+  // (grow_shrink.h).
+  TopologyHistory history;
+  std::vector<EventCut> plan;
+  std::unique_ptr<const Morph> morph;
+  for (Morph::Blend blend : {Morph::Blend::Linear, Morph::Blend::GrowShrink}) {
+    t0 = Clock::now();
+    morph = std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b, blend);  // INT set-up
+    rep.times.interp += Seconds(t0);
+    t0 = Clock::now();
+    history = TrackTopology(*morph, options.steps,
+                            [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
+    plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(), m.sourceSurface,
+                       m.targetSurface, grid.h, options.steps);
+    rep.times.deform += Seconds(t0);
+    if (morph->mode() != Morph::Mode::LinearBlend || !GrowsFromNothing(history.events, plan)) break;
+  }
+  rep.morphMode = morph->Describe();
   rep.topologyAlongMorph = std::move(history.frames);
   rep.topologyEvents = std::move(history.events);
-  rep.times.deform += Seconds(t0);
 
   Tracker tracker = StartTracking(m, fields, samples);
   fields.gradient0 = VectorField();
   Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan);  // surgery.h
-  Deform(morph, fields, options, grid, tracker, surgery, rep, stage);
+  Deform(*morph, fields, options, grid, tracker, surgery, rep, stage);
 
   // Images on the placed target: measure, then project onto the target mesh itself.
   stage(0.9, "measuring the map");

@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kSplitCells = 2;    // tracked edges longer than this (in cells) are split there
 constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
-constexpr double kSpreadStretch = 2;  // refinement spreads to faces stretched more than this
+constexpr double kSpreadStretch = 2;  // edges stretched more than this (and long) are split anywhere
 constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
 constexpr double kTakesPartCells = 6;  // the tracked surface takes part in an event this near (+ hole radius)
 constexpr double kCollapsedCells = 5;  // a piece within this many cells (+ hole radius) of a dying part goes with it
@@ -398,7 +398,6 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
 }
 
 void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tracker &tracker) {
-  if (std::none_of(tris_.begin(), tris_.end(), [](const Tri &t) { return t.state == kAlive && t.refinable; })) return;
   const double limit = kSplitCells * cell_;
   std::vector<Point3> born;  // tracked positions of the points added at this step
   for (int pass = 0; pass < 4; ++pass) {
@@ -407,28 +406,19 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
       if (tris_[n].state == kAlive)
         for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
     auto longEdge = [&](const Tri &t, int e) { return vcg::Distance(position[t.v[e]], position[t.v[(e + 1) % 3]]) > limit; };
-    // Refinable faces spread to neighbours stretched by the opening hole (long, and
-    // longer than kSpreadStretch times on the source).
+    // Torn: long, and longer than kSpreadStretch times on the source (a rim opening, a
+    // surface growing into a part of the target).
     auto torn = [&](const Tri &t, int e) {
       const int a = t.v[e], b = t.v[(e + 1) % 3];
       return longEdge(t, e) && vcg::Distance(position[a], position[b]) > kSpreadStretch * vcg::Distance(sourcePosition_[a], sourcePosition_[b]);
     };
-    std::vector<int> spread;
-    for (int n = 0; n < int(tris_.size()); ++n) {
-      const Tri &t = tris_[n];
-      if (t.state != kAlive || t.refinable || !(torn(t, 0) || torn(t, 1) || torn(t, 2))) continue;
-      for (int e = 0; e < 3; ++e)
-        for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])])
-          if (tris_[m].refinable) spread.push_back(n);
-    }
-    for (int n : spread) tris_[n].refinable = true;
-    // Long edges of refinable faces get a midpoint.
+    // Long edges of rim faces, and torn edges anywhere, get a midpoint.
     std::unordered_map<std::uint64_t, int> midpoint;
     for (const Tri &t : tris_)
-      if (t.state == kAlive && t.refinable)
+      if (t.state == kAlive)
         for (int e = 0; e < 3; ++e)
-          if (longEdge(t, e)) midpoint[Key(t.v[e], t.v[(e + 1) % 3])] = -1;
-    if (midpoint.empty() || PointsAdded() + int(midpoint.size()) > sourceVertices_) break;  // the budget: as many as the source has
+          if (t.refinable ? longEdge(t, e) : torn(t, e)) midpoint[Key(t.v[e], t.v[(e + 1) % 3])] = -1;
+    if (midpoint.empty() || PointsAdded() + int(midpoint.size()) > kAddedPerVertex * sourceVertices_) break;  // the budget
     for (auto &[key, id] : midpoint) {
       const int a = int(key >> 32), b = int(key & 0xffffffffu);
       id = int(sourcePosition_.size());

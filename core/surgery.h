@@ -34,16 +34,18 @@
 //        - islands: a piece cut off from the rest of its component with less than 2% of
 //          that component's area (left between the sphere's passes over a sheet) goes,
 //      repeated until nothing changes; so each sheet loses one disc, a pinching neck one band;
-//   4. refine: the faces on a rim, and from them any neighbour stretched more than twice
-//      its length on the source, have each tracked edge longer than 2 cells split at its
-//      midpoint. A hole cut by a 1-cell sphere opens to the size of the target's handle
+//   4. refine: the faces on a rim have each tracked edge longer than 2 cells split at its
+//      midpoint, and so has every edge stretched to more than twice its length on the
+//      source. A hole cut by a 1-cell sphere opens to the size of the target's handle
 //      (sphere -> torus: the loop becomes the torus's inner circle, 56 cells long at 48
-//      cells), and its rim would be stretched up to 18 cells between vertices. The new
+//      cells), and its rim would be stretched up to 18 cells between vertices; a surface
+//      growing into a part of the target (grow_shrink.h) stretches a patch of a few faces
+//      over the whole part. The new
 //      point lies at the edge's midpoint on the source too; its position at step k is the
 //      midpoint of the edge's tracked ends pulled back onto f(., t_k+1) = 0 (the ends are
 //      both on the same side of the parting by then), and from there it has its own
-//      trajectory through the same fields. At most as many points are added as the source
-//      has vertices.
+//      trajectory through the same fields. At most kAddedPerVertex points are added per
+//      vertex of the source.
 // The map stays Eulerian: cutting never moves a point, and every vertex of the cut source
 // is mapped by its own trajectory. The vertices that stay keep the images of the single
 // tracking pass. With no event cut, the cut source is the source.
@@ -58,6 +60,8 @@
 #include <vector>
 
 namespace eulermap {
+
+constexpr int kAddedPerVertex = 4;  // the refinement's budget
 
 class Surgery {
  public:

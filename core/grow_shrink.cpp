@@ -1,0 +1,122 @@
+#include "grow_shrink.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+namespace eulermap {
+
+namespace {
+
+constexpr double kUnreached = std::numeric_limits<double>::infinity();
+
+// A move to one of the 26 neighbours, with the paths of grid edges that join its ends
+// inside the cell (none for an edge move; 2 of one corner for a face diagonal, 6 of two
+// corners for a body diagonal).
+struct Move {
+  vcg::Point3i offset;
+  double length = 0;  // in cells
+  std::vector<std::array<vcg::Point3i, 2>> paths;  // corners passed; the second is unused for a face diagonal
+};
+
+std::vector<Move> Moves() {
+  std::vector<Move> moves;
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x) {
+        const int axes = std::abs(x) + std::abs(y) + std::abs(z);
+        if (axes == 0) continue;
+        Move m;
+        m.offset = vcg::Point3i(x, y, z);
+        m.length = std::sqrt(double(axes));
+        const int d[3] = {x, y, z};
+        auto along = [&](int a) {
+          vcg::Point3i p(0, 0, 0);
+          p[a] = d[a];
+          return p;
+        };
+        std::vector<int> used;
+        for (int a = 0; a < 3; ++a)
+          if (d[a]) used.push_back(a);
+        if (axes == 2) {
+          for (int a : used) m.paths.push_back({along(a), along(a)});
+        } else if (axes == 3) {
+          for (int a : used)
+            for (int b : used)
+              if (a != b) m.paths.push_back({along(a), along(a) + along(b)});
+        }
+        moves.push_back(m);
+      }
+  return moves;
+}
+
+} // namespace
+
+std::vector<double> DistanceWithin(const Grid &g, const std::vector<char> &inside, const std::vector<char> &seed) {
+  std::vector<double> d(g.NodeCount(), kUnreached);
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::size_t n = 0; n < d.size(); ++n)
+    if (seed[n] && inside[n]) d[n] = 0, queue.push({0.0, n});
+  const std::vector<Move> moves = Moves();
+  const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
+  auto in = [&](const vcg::Point3i &p) {
+    return p.X() >= 0 && p.Y() >= 0 && p.Z() >= 0 && p.X() < nx && p.Y() < ny && p.Z() < nz &&
+           inside[g.Index(p.X(), p.Y(), p.Z())];
+  };
+  while (!queue.empty()) {
+    const auto [dist, n] = queue.top();
+    queue.pop();
+    if (dist > d[n]) continue;
+    const vcg::Point3i p(int(n % nx), int(n / nx % ny), int(n / (std::size_t(nx) * ny)));
+    for (const Move &m : moves) {
+      const vcg::Point3i q = p + m.offset;
+      if (!in(q)) continue;
+      bool joined = m.paths.empty();
+      for (const auto &path : m.paths) joined = joined || (in(p + path[0]) && in(p + path[1]));
+      if (!joined) continue;
+      const std::size_t i = g.Index(q.X(), q.Y(), q.Z());
+      const double e = dist + m.length * g.h;
+      if (e < d[i]) d[i] = e, queue.push({e, i});
+    }
+  }
+  return d;
+}
+
+GrowShrink::GrowShrink(const ScalarField &f0, const ScalarField &f1) : f0_(f0), f1_(f1) {
+  const std::size_t count = f0.values.size();
+  std::vector<char> inside(count), x0(count), x1(count);
+  for (std::size_t n = 0; n < count; ++n) {
+    x0[n] = f0.values[n] < 0;
+    x1[n] = f1.values[n] < 0;
+    inside[n] = x0[n] || x1[n];
+  }
+  d0_ = DistanceWithin(f0.grid, inside, x0);
+  d1_ = DistanceWithin(f0.grid, inside, x1);
+  for (std::size_t n = 0; n < count; ++n) {
+    if (x1[n] && d0_[n] < kUnreached) l0_ = std::max(l0_, d0_[n]);
+    if (x0[n] && d1_[n] < kUnreached) l1_ = std::max(l1_, d1_[n]);
+  }
+  switch_ = l0_ + l1_ > 0 ? l0_ / (l0_ + l1_) : 0.5;
+}
+
+void GrowShrink::Frame(double t, ScalarField &out) const {
+  out.grid = f0_.grid;
+  if (t <= 0 || t >= 1) {  // f0 and f1 exactly
+    out.values = t <= 0 ? f0_.values : f1_.values;
+    return;
+  }
+  out.values.resize(f0_.values.size());
+  const long long count = (long long)out.values.size();
+  const bool grow = t <= switch_;
+  const double s = grow ? (switch_ > 0 ? t / switch_ : 1) : (switch_ < 1 ? (1 - t) / (1 - switch_) : 0);
+#pragma omp parallel for schedule(static)
+  for (long long n = 0; n < count; ++n) {
+    const double a = f0_.values[n], b = f1_.values[n];
+    out.values[n] = grow ? std::min(a, std::max(b, d0_[n] - s * l0_)) : std::min(b, std::max(a, d1_[n] - s * l1_));
+  }
+}
+
+} // namespace eulermap
