@@ -11,6 +11,7 @@
 #include <wrap/io_trimesh/import.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -140,7 +141,7 @@ Point3 Bend(const Point3 &p, const Box3 &box, double strength) {
   return Point3(cos * bent.X() - sin * bent.Z(), bent.Y(), sin * bent.X() + cos * bent.Z()) * box.Diag();
 }
 
-void MakeDoubleTorus(Mesh &m, double r, int cells) {
+void MakeImplicit(Mesh &m, const std::function<double(const Point3 &)> &f, const Box3 &box, int cells) {
   using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<float>>;
   // vcglib 2020.09's TrivialWalker allocates its five slice buffers in SetExtractionBox
   // (new[]) and has no destructor; this one frees them (NextYSlice only swaps them).
@@ -151,19 +152,15 @@ void MakeDoubleTorus(Mesh &m, double r, int cells) {
     }
   };
   using Cubes = vcg::tri::MarchingCubes<Mesh, Walker>;
-  const Box3 box(Point3(-1.2, -0.8, -0.4), Point3(1.2, 0.8, 0.4));
-  const double h = box.DimX() / cells;
-  const vcg::Point3i size(cells + 1, int(std::ceil(box.DimY() / h)) + 1, int(std::ceil(box.DimZ() / h)) + 1);
+  const double h = std::max({box.DimX(), box.DimY(), box.DimZ()}) / cells;
+  const vcg::Point3i size(int(std::ceil(box.DimX() / h)) + 1, int(std::ceil(box.DimY() / h)) + 1,
+                          int(std::ceil(box.DimZ() / h)) + 1);
   Volume volume;
   volume.Init(size, vcg::Box3<float>(vcg::Point3f::Construct(box.min),
                                      vcg::Point3f::Construct(box.min + Point3(size[0] - 1, size[1] - 1, size[2] - 1) * h)));
   for (int k = 0; k < size[2]; ++k)
     for (int j = 0; j < size[1]; ++j)
-      for (int i = 0; i < size[0]; ++i) {
-        const Point3 p = box.min + Point3(i, j, k) * h;
-        const double e = p.X() * p.X() * (1 - p.X() * p.X()) - p.Y() * p.Y();
-        volume.Val(i, j, k) = float(e * e + p.Z() * p.Z() - r * r);
-      }
+      for (int i = 0; i < size[0]; ++i) volume.Val(i, j, k) = float(f(box.min + Point3(i, j, k) * h));
   m.Clear();
   Walker walker;
   Cubes cubes(m, walker);
@@ -173,6 +170,16 @@ void MakeDoubleTorus(Mesh &m, double r, int cells) {
   vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(m);
   vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
   Finish(m);
+}
+
+void MakeDoubleTorus(Mesh &m, double r, int cells) {
+  MakeImplicit(
+      m,
+      [r](const Point3 &p) {
+        const double e = p.X() * p.X() * (1 - p.X() * p.X()) - p.Y() * p.Y();
+        return e * e + p.Z() * p.Z() - r * r;
+      },
+      Box3(Point3(-1.2, -0.8, -0.4), Point3(1.2, 0.8, 0.4)), cells);
 }
 
 void MakeTorus(Mesh &m, const Point3 &centre, double R, double r, int ringDiv, int tubeDiv, TexCoordKind texCoords) {

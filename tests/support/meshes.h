@@ -4,6 +4,7 @@
 #include "core/charts.h"
 #include "core/mesh.h"
 
+#include <functional>
 #include <string>
 
 namespace eulermap::testing {
@@ -35,6 +36,10 @@ void RefineMidpoint(Mesh &m, int times);
 // A smooth non-rigid deformation of the point p of a mesh with box `box`: stretch, bend and
 // turn, scaled by `strength` (0: the identity). The benchmark's targets.
 Point3 Bend(const Point3 &p, const Box3 &box, double strength);
+
+// The zero set of f (negative inside) over box, by vcglib's marching cubes on `cells` cells
+// along the box's longest side; outward-oriented. f must be positive on the box's border.
+void MakeImplicit(Mesh &m, const std::function<double(const Point3 &)> &f, const Box3 &box, int cells);
 
 // Genus 2: the zero set of (x^2 (1 - x^2) - y^2)^2 + z^2 - r^2, a tube around the figure
 // eight y^2 = x^2 (1 - x^2) (two loops crossing at the origin) in [-1.2, 1.2] x [-0.8, 0.8]

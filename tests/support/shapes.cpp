@@ -1,0 +1,137 @@
+#include "shapes.h"
+
+#include "meshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace eulermap::testing {
+
+namespace {
+
+using Sdf = std::function<double(const Point3 &)>;
+
+double Ball(const Point3 &p, const Point3 &c, double r) { return (p - c).Norm() - r; }
+
+double Torus(const Point3 &p, const Point3 &c, double R, double r) {
+  const Point3 q = p - c;
+  return std::hypot(std::hypot(q.X(), q.Y()) - R, q.Z()) - r;
+}
+
+double Ellipsoid(const Point3 &p, const Point3 &radii) {  // a bound, exact on the surface's sign
+  const Point3 q(p.X() / radii.X(), p.Y() / radii.Y(), p.Z() / radii.Z());
+  return (q.Norm() - 1) * std::min({radii.X(), radii.Y(), radii.Z()});
+}
+
+// A box from lo to hi (exact signed distance).
+double Block(const Point3 &p, const Point3 &lo, const Point3 &hi) {
+  const Point3 c = (lo + hi) / 2, e = (hi - lo) / 2;
+  const Point3 q(std::abs(p.X() - c.X()) - e.X(), std::abs(p.Y() - c.Y()) - e.Y(), std::abs(p.Z() - c.Z()) - e.Z());
+  const Point3 out(std::max(q.X(), 0.0), std::max(q.Y(), 0.0), std::max(q.Z(), 0.0));
+  return out.Norm() + std::min(std::max({q.X(), q.Y(), q.Z()}), 0.0);
+}
+
+Sdf Union(std::vector<Sdf> parts) {
+  return [parts](const Point3 &p) {
+    double d = 1e300;
+    for (const Sdf &s : parts) d = std::min(d, s(p));
+    return d;
+  };
+}
+
+Sdf Row(int n, double spacing, const std::function<double(const Point3 &, const Point3 &)> &one) {
+  std::vector<Sdf> parts;
+  for (int i = 0; i < n; ++i) {
+    const Point3 c((i - (n - 1) / 2.0) * spacing, 0, 0);
+    parts.push_back([c, one](const Point3 &p) { return one(p, c); });
+  }
+  return Union(parts);
+}
+
+// Furniture: a seat 0.8 square at height 0.45-0.55, legs 0.1 square, a back 0.8 wide.
+constexpr double kLeg = 0.1, kHalf = 0.4;
+std::vector<Sdf> Seat(double top) {
+  std::vector<Sdf> parts = {[top](const Point3 &p) { return Block(p, Point3(-kHalf, -kHalf, top - 0.1), Point3(kHalf, kHalf, top)); }};
+  for (double x : {-kHalf, kHalf - kLeg})
+    for (double y : {-kHalf, kHalf - kLeg})
+      parts.push_back([x, y, top](const Point3 &p) { return Block(p, Point3(x, y, 0), Point3(x + kLeg, y + kLeg, top - 0.05)); });
+  return parts;
+}
+void AddRails(std::vector<Sdf> &parts) {  // stretchers at height 0.15-0.25, between neighbouring legs
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, -kHalf, 0.15), Point3(kHalf, -kHalf + kLeg, 0.25)); });
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, kHalf - kLeg, 0.15), Point3(kHalf, kHalf, 0.25)); });
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, -kHalf, 0.15), Point3(-kHalf + kLeg, kHalf, 0.25)); });
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(kHalf - kLeg, -kHalf, 0.15), Point3(kHalf, kHalf, 0.25)); });
+}
+void AddSolidBack(std::vector<Sdf> &parts) {
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, kHalf - kLeg, 0.5), Point3(kHalf, kHalf, 1.3)); });
+}
+void AddSlattedBack(std::vector<Sdf> &parts) {  // two posts, a top rail and two slats: 3 gaps
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, kHalf - kLeg, 0.5), Point3(-kHalf + kLeg, kHalf, 1.3)); });
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(kHalf - kLeg, kHalf - kLeg, 0.5), Point3(kHalf, kHalf, 1.3)); });
+  parts.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, kHalf - kLeg, 1.2), Point3(kHalf, kHalf, 1.3)); });
+  for (double x : {-0.15, 0.05})
+    parts.push_back([x](const Point3 &p) { return Block(p, Point3(x, kHalf - kLeg, 0.5), Point3(x + kLeg, kHalf, 1.25)); });
+}
+
+struct Made {
+  Shape shape;
+  Sdf sdf;
+  Box3 box;
+};
+
+std::vector<Made> Catalogue() {
+  std::vector<Made> all;
+  const Box3 unit(Point3(-1, -1, -1), Point3(1, 1, 1));
+  all.push_back({{"sphere", 1, 0}, [](const Point3 &p) { return Ball(p, Point3(0, 0, 0), 0.7); }, unit});
+  for (int g = 1; g <= 4; ++g) {
+    const double half = 0.45 * (g - 1) + 0.8;
+    all.push_back({{"ring" + std::to_string(g), 1, g},
+                   Row(g, 0.9, [](const Point3 &p, const Point3 &c) { return Torus(p, c, 0.5, 0.18); }),
+                   Box3(Point3(-half, -0.8, -0.3), Point3(half, 0.8, 0.3))});
+  }
+  for (int n = 2; n <= 3; ++n) {
+    const double half = 0.65 * (n - 1) + 0.6;
+    all.push_back({{"spheres" + std::to_string(n), n, 0},
+                   Row(n, 1.3, [](const Point3 &p, const Point3 &c) { return Ball(p, c, 0.5); }),
+                   Box3(Point3(-half, -0.6, -0.6), Point3(half, 0.6, 0.6))});
+    const double length = 0.65 * (n - 1) + 0.5;
+    all.push_back({{"blob" + std::to_string(n), 1, 0},
+                   [length](const Point3 &p) { return Ellipsoid(p, Point3(length, 0.5, 0.5)); },
+                   Box3(Point3(-length - 0.1, -0.6, -0.6), Point3(length + 0.1, 0.6, 0.6))});
+  }
+  const Box3 furniture(Point3(-0.5, -0.5, -0.1), Point3(0.5, 0.5, 1.4));
+  std::vector<Sdf> chair = Seat(0.55);
+  AddSolidBack(chair);
+  all.push_back({{"chair", 1, 0}, Union(chair), furniture});
+  std::vector<Sdf> rails = Seat(0.55);
+  AddSolidBack(rails);
+  AddRails(rails);
+  all.push_back({{"chair_rails", 1, 4}, Union(rails), furniture});
+  std::vector<Sdf> slats = Seat(0.55);
+  AddSlattedBack(slats);
+  all.push_back({{"chair_slats", 1, 3}, Union(slats), furniture});
+  all.push_back({{"table", 1, 0}, Union(Seat(0.75)), Box3(Point3(-0.5, -0.5, -0.1), Point3(0.5, 0.5, 0.85))});
+  return all;
+}
+
+} // namespace
+
+const std::vector<Shape> &Shapes() {
+  static const std::vector<Shape> shapes = [] {
+    std::vector<Shape> s;
+    for (const Made &m : Catalogue()) s.push_back(m.shape);
+    return s;
+  }();
+  return shapes;
+}
+
+void MakeShape(const std::string &name, Mesh &m, int cells) {
+  for (const Made &made : Catalogue())
+    if (made.shape.name == name) return MakeImplicit(m, made.sdf, made.box, cells);
+  throw std::invalid_argument("no shape named " + name);
+}
+
+} // namespace eulermap::testing
