@@ -167,16 +167,16 @@ std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align alig
   return align == Align::None ? "none (target as it is)" : "centre-and-scale (centroid and bounding-box diagonal)";
 }
 
-// Whether the morph grows a part from nothing (a birth the grid's picture of the target does
-// not explain, even one that merges with the surface soon after) or shrinks one into nothing
-// that surgery would act on (surgery_plan.h).
+// Whether the morph grows a part from nothing: a birth that the grid's picture of the target
+// does not explain (surgery_plan.h), even one that merges with the surface soon after. No
+// tracked point reaches such a part. A part shrinking into nothing is left to the linear
+// blend: its piece of the surface collapses, and the target stays covered (chair -> table:
+// the back withdraws; grown and withdrawn instead, it leaves 3 parts and 13 loops at 48 cells).
 bool GrowsFromNothing(const std::vector<TopologyEvent> &events, const std::vector<EventCut> &plan) {
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    const bool grid = plan[e] == EventCut::SourceGrid || plan[e] == EventCut::TargetGrid;
-    if ((events[e].kind == TopologyEventKind::ComponentBorn && !grid) ||
-        (events[e].kind == TopologyEventKind::ComponentDied && plan[e] == EventCut::Planned))
+  for (std::size_t e = 0; e < events.size(); ++e)
+    if (events[e].kind == TopologyEventKind::ComponentBorn && plan[e] != EventCut::TargetGrid &&
+        plan[e] != EventCut::SourceGrid)
       return true;
-  }
   return false;
 }
 
@@ -373,8 +373,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
 
   // The morph (morph.h), where {f(., t) < 0} changes topology along it (morph_topology.h), and
   // which of those events surgery acts on (surgery_plan.h). Where the linear blend would grow
-  // a part from nothing or shrink one into nothing, the morph grows and withdraws instead
-  // (grow_shrink.h).
+  // a part from nothing, the morph grows and withdraws instead (grow_shrink.h).
   TopologyHistory history;
   std::vector<EventCut> plan;
   std::unique_ptr<const Morph> morph;
