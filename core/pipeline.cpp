@@ -85,6 +85,7 @@ void RequireInside(const ScalarField &f, const char *role) {
 constexpr double kLowCoverage = 0.9;
 constexpr double kLowOnSurface = 0.9;
 constexpr double kFullCoverage = 0.97;  // below it, parts born from nothing are named
+constexpr double kFoldedShare = 0.01;  // flipped area after untangling above it: the map folds
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
 
@@ -333,70 +334,70 @@ void PredictCut(const Meshes &m, Report &rep) {
   rep.neededEulerCharacteristic = needed.eulerCharacteristic;
 }
 
-} // namespace
+// How many of the figures that say a map failed are off: a cut that is not the one needed,
+// coverage below kFullCoverage, flipped area above kFoldedShare after untangling.
+int Failures(const Report &r) {
+  return (r.cutPredicted && !r.CutAsNeeded()) + (r.quality.coverage < kFullCoverage) +
+         (r.quality.flippedAreaShare > kFoldedShare);
+}
 
-void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
-                const Options &options, Result &result, const Progress &progress, const std::vector<Point3> &samples) {
-  if (&sourceIn == &targetIn) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
-  options.Validate();
-  CheckAnchors(anchors);
-  for (std::size_t n = 0; n < samples.size(); ++n)
-    if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
-      throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
-  const ThreadScope threads(options.threads);
-  const Stage stage = [&](double share, const std::string &name) {
-    if (progress && !progress(share, name)) throw Error("cancelled");
-  };
+// Fewer failures; on a tie, less flipped and uncovered area.
+bool Better(const Report &a, const Report &b) {
+  const int fa = Failures(a), fb = Failures(b);
+  if (fa != fb) return fa < fb;
+  return a.quality.flippedAreaShare + (1 - a.quality.coverage) < b.quality.flippedAreaShare + (1 - b.quality.coverage);
+}
+
+// One map's figures for the log: "linear blend: cut 1/0/2 (needs 1/8/-6), coverage 94.1%, flipped 0.76%".
+std::string Summary(const Report &r) {
+  char text[200];
+  std::snprintf(text, sizeof text, "%s: cut %d/%d/%d%s, coverage %.1f%%, flipped %.2f%%",
+                r.morphMode.substr(0, r.morphMode.find(" (")).c_str(), r.cutComponents, r.cutBoundaryLoops,
+                r.cutEulerCharacteristic,
+                r.cutPredicted ? (" (needs " + std::to_string(r.neededComponents) + "/" +
+                                  std::to_string(r.neededBoundaryLoops) + "/" +
+                                  std::to_string(r.neededEulerCharacteristic) + ")").c_str()
+                               : "",
+                100 * r.quality.coverage, 100 * r.quality.flippedAreaShare);
+  return text;
+}
+
+// to = from, meshes copied (vcglib's meshes hold pointers into their own vectors): the cut's
+// TargetPosition attribute is made on `to` first, as Append copies only attributes both have.
+void Adopt(Result &to, Result &from) {
+  to.cut.Clear();
+  vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(to.cut, "TargetPosition");
+  CopyMesh(to.cut, from.cut);
+  to.mapped.Clear();
+  CopyMesh(to.mapped, from.mapped);
+  to.filled.Clear();
+  CopyMesh(to.filled, from.filled);
+  to.sampleImages = from.sampleImages;
+  to.report = from.report;
+}
+
+// One map with one morph (morph.h): where {f(., t) < 0} changes topology along it
+// (morph_topology.h), which of those events surgery acts on (surgery_plan.h), the step loop,
+// and the outputs and their figures. result.report starts from `base` (what the stages before
+// the morph filled in).
+void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vector<AnchorPair> &anchors,
+             const Options &options, const std::vector<Point3> &samples, const Morph &morph, const Report &base,
+             Result &result, const Stage &stage) {
   Report &rep = result.report;
-  rep = Report();
-  rep.steps = options.steps;
-  rep.alpha = options.alpha;
-  rep.anchors = int(anchors.size());
-  rep.threads = omp_get_max_threads();
-  rep.solver = options.solver == VelocitySolver::Method::Multigrid           ? "multigrid-preconditioned conjugate gradients"
-               : options.solver == VelocitySolver::Method::ConjugateGradient ? "block-Jacobi-preconditioned conjugate gradients"
-                                                                             : "Gauss-Seidel (red-black)";
-  rep.placement = DescribePlacement(anchors, options.align);
-
-  stage(0.0, "checking the meshes");
-  Meshes m;
-  PrepareMeshes(sourceIn, targetIn, anchors, options, m, rep);
-  rep.sourceVertices = m.source.vn;
-  const Grid grid = ChooseGrid(m, options, samples.size());
-  rep.gridNodes = grid.dims;
-  rep.cellSize = grid.h;
-
-  stage(0.0, "signed distance fields");
+  rep = base;
+  rep.morphMode = morph.Describe();
   auto t0 = Clock::now();
-  Fields fields = SignedDistanceFields(m, grid, !samples.empty());
-  rep.times.sdf = Seconds(t0);
-
-  // The morph (morph.h), where {f(., t) < 0} changes topology along it (morph_topology.h), and
-  // which of those events surgery acts on (surgery_plan.h). Where the linear blend would grow
-  // a part from nothing, the morph grows and withdraws instead (grow_shrink.h).
-  TopologyHistory history;
-  std::vector<EventCut> plan;
-  std::unique_ptr<const Morph> morph;
-  for (Morph::Blend blend : {Morph::Blend::Linear, Morph::Blend::GrowShrink}) {
-    t0 = Clock::now();
-    morph = std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b, blend);  // INT set-up
-    rep.times.interp += Seconds(t0);
-    t0 = Clock::now();
-    history = TrackTopology(*morph, options.steps,
-                            [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
-    plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(), m.sourceSurface,
-                       m.targetSurface, grid.h, options.steps);
-    rep.times.deform += Seconds(t0);
-    if (morph->mode() != Morph::Mode::LinearBlend || !GrowsFromNothing(history.events, plan)) break;
-  }
-  rep.morphMode = morph->Describe();
+  TopologyHistory history =
+      TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
+  const std::vector<EventCut> plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(),
+                                                 m.sourceSurface, m.targetSurface, grid.h, options.steps);
   rep.topologyAlongMorph = std::move(history.frames);
   rep.topologyEvents = std::move(history.events);
+  rep.times.deform += Seconds(t0);
 
   Tracker tracker = StartTracking(m, fields, samples);
-  fields.gradient0 = VectorField();
   Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan);  // surgery.h
-  Deform(*morph, fields, options, grid, tracker, surgery, rep, stage);
+  Deform(morph, fields, options, grid, tracker, surgery, rep, stage);
 
   // Images on the placed target: measure, then project onto the target mesh itself.
   stage(0.9, "measuring the map");
@@ -483,7 +484,82 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.cutFaces = cut.fn;
   WarnOnFailure(rep.quality, TestMirror(m.b, m.a), back, rep);
   rep.times.quality = Seconds(t0);
-  rep.peakMemoryKiB = PeakMemoryKiB();
+}
+
+} // namespace
+
+void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
+                const Options &options, Result &result, const Progress &progress, const std::vector<Point3> &samples) {
+  if (&sourceIn == &targetIn) throw Error("the target mesh is the source mesh: choose another layer as target_mesh");
+  options.Validate();
+  CheckAnchors(anchors);
+  for (std::size_t n = 0; n < samples.size(); ++n)
+    if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
+      throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
+  const ThreadScope threads(options.threads);
+  const Stage stage = [&](double share, const std::string &name) {
+    if (progress && !progress(share, name)) throw Error("cancelled");
+  };
+  Report &rep = result.report;
+  rep = Report();
+  rep.steps = options.steps;
+  rep.alpha = options.alpha;
+  rep.anchors = int(anchors.size());
+  rep.threads = omp_get_max_threads();
+  rep.solver = options.solver == VelocitySolver::Method::Multigrid           ? "multigrid-preconditioned conjugate gradients"
+               : options.solver == VelocitySolver::Method::ConjugateGradient ? "block-Jacobi-preconditioned conjugate gradients"
+                                                                             : "Gauss-Seidel (red-black)";
+  rep.placement = DescribePlacement(anchors, options.align);
+
+  stage(0.0, "checking the meshes");
+  Meshes m;
+  PrepareMeshes(sourceIn, targetIn, anchors, options, m, rep);
+  rep.sourceVertices = m.source.vn;
+  const Grid grid = ChooseGrid(m, options, samples.size());
+  rep.gridNodes = grid.dims;
+  rep.cellSize = grid.h;
+
+  stage(0.0, "signed distance fields");
+  auto t0 = Clock::now();
+  const Fields fields = SignedDistanceFields(m, grid, !samples.empty());
+  rep.times.sdf = Seconds(t0);
+
+  // The morph (morph.h). The linear blend, unless it grows a part of the target from nothing
+  // (no tracked point reaches such a part): then the source grows through the target and
+  // withdraws (grow_shrink.h). Where the first map's own figures say it failed, the other
+  // morph is tried as well and the better map kept (the log gives both).
+  t0 = Clock::now();
+  auto linear = std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b);
+  rep.times.interp += Seconds(t0);
+  std::vector<Morph::Blend> order = {Morph::Blend::Linear};
+  if (linear->mode() == Morph::Mode::LinearBlend) {
+    const TopologyHistory history = TrackTopology(*linear, options.steps);
+    const std::vector<EventCut> plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(),
+                                                   m.sourceSurface, m.targetSurface, grid.h, options.steps);
+    order = GrowsFromNothing(history.events, plan) ? std::vector<Morph::Blend>{Morph::Blend::GrowShrink, Morph::Blend::Linear}
+                                                   : std::vector<Morph::Blend>{Morph::Blend::Linear, Morph::Blend::GrowShrink};
+  }
+  const Report base = rep;
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    t0 = Clock::now();
+    const auto morph = order[n] == Morph::Blend::Linear ? std::move(linear)
+                                                        : std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b, order[n]);
+    const double setup = Seconds(t0);
+    if (n == 0) {
+      Attempt(m, fields, grid, anchors, options, samples, *morph, base, result, stage);
+      result.report.times.interp += setup;
+      if (Failures(result.report) == 0) break;
+      continue;
+    }
+    Result other;
+    Attempt(m, fields, grid, anchors, options, samples, *morph, base, other, stage);
+    other.report.times.interp += setup;
+    const std::string first = Summary(result.report), second = Summary(other.report);
+    const bool keepOther = Better(other.report, result.report);
+    if (keepOther) Adopt(result, other);
+    result.report.morphsTried = "first " + (keepOther ? first + "; then " + second + ", kept" : first + ", kept; then " + second);
+  }
+  result.report.peakMemoryKiB = PeakMemoryKiB();
   stage(1.0, "done");
 }
 
