@@ -44,12 +44,12 @@ const Pair kPairs[] = {
 
 constexpr int kMeshCells = 64;  // the marching cubes' resolution of the shapes
 
-// The pairs at 96 and 128 in CI: genus up and down, parts merging and splitting, thin parts
-// (each case there takes 5-100 s on 2 cores; all of them, 25 minutes).
+// The pairs at 96 and 128 in CI: genus up and down, parts merging and splitting (each case
+// there takes 5-130 s on 2 cores; all 19 pairs, 25 minutes).
 std::vector<Pair> FinePairs() {
   if (const char *all = std::getenv("EULERMAP_FAMILIES_ALL"); all && std::strcmp(all, "1") == 0)
     return std::vector<Pair>(std::begin(kPairs), std::end(kPairs));
-  return {{"sphere", "ring2"}, {"ring2", "sphere"}, {"spheres3", "blob3"}, {"blob3", "spheres3"}, {"chair_rails", "chair"}};
+  return {{"sphere", "ring2"}, {"ring2", "sphere"}, {"spheres3", "blob3"}, {"blob3", "spheres3"}};
 }
 
 enum Criterion : unsigned { kCut = 1, kCoverage = 2, kFlipped = 4, kLongest = 8 };
