@@ -396,7 +396,8 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   rep.times.deform += Seconds(t0);
 
   Tracker tracker = StartTracking(m, fields, samples);
-  Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan);  // surgery.h
+  Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan,
+                  morph.mode() == Morph::Mode::GrowShrink);  // surgery.h
   Deform(morph, fields, options, grid, tracker, surgery, rep, stage);
 
   // Images on the placed target: measure, then project onto the target mesh itself.

@@ -71,8 +71,8 @@ double RayTriangle(const Point3 &o, const Point3 &d, const Point3 &a, const Poin
 } // namespace
 
 Surgery::Surgery(const Mesh &source, double radius, double cell, const std::vector<TopologyEvent> &events,
-                 const std::vector<EventCut> &plan)
-    : radius_(radius), cell_(cell), events_(events) {
+                 const std::vector<EventCut> &plan, bool refineStretched)
+    : radius_(radius), cell_(cell), events_(events), refineStretched_(refineStretched) {
   if (plan.size() != events.size()) throw std::logic_error("Surgery: one plan entry per event");
   for (std::size_t e = 0; e < events.size(); ++e) {
     EventSurgery o;
@@ -175,7 +175,7 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
     }
   }
   // 3. Clean the rims; 4. refine them as they open.
-  if (!cutting.empty()) Clean(position, cutting);
+  if (!cutting.empty()) Clean(position, cutting), refineStretched_ = true;
   Refine(position, fNext, tracker);
 }
 
@@ -398,6 +398,7 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
 }
 
 void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tracker &tracker) {
+  if (!refineStretched_) return;  // nothing cut yet: no rim, and the source's faces stay
   const double limit = kSplitCells * cell_;
   std::vector<Point3> born;  // tracked positions of the points added at this step
   for (int pass = 0; pass < 4; ++pass) {

@@ -36,7 +36,8 @@
 //      repeated until nothing changes; so each sheet loses one disc, a pinching neck one band;
 //   4. refine: the faces on a rim have each tracked edge longer than 2 cells split at its
 //      midpoint, and so has every edge stretched to more than twice its length on the
-//      source. A hole cut by a 1-cell sphere opens to the size of the target's handle
+//      source, once the surface has been cut (or from the start, when asked: growing into
+//      a part). A map that cuts nothing keeps the source's own faces. A hole cut by a 1-cell sphere opens to the size of the target's handle
 //      (sphere -> torus: the loop becomes the torus's inner circle, 56 cells long at 48
 //      cells), and its rim would be stretched up to 18 cells between vertices; a surface
 //      growing into a part of the target (grow_shrink.h) stretches a patch of a few faces
@@ -68,8 +69,10 @@ class Surgery {
   // in: source (no deleted vertices or faces; vertex n is point n of the pipeline's Tracker),
   //     the sphere's radius and the grid cell (world units), the morph's events and the plan
   //     for each (surgery_plan.h: those left Planned are acted on at their step)
+  // refineStretched: split stretched edges from the start (step 4), not only once a cut
+  // has changed the surface (the grow-then-withdraw morph stretches it as it grows)
   Surgery(const Mesh &source, double radius, double cell, const std::vector<TopologyEvent> &events,
-          const std::vector<EventCut> &plan);
+          const std::vector<EventCut> &plan, bool refineStretched);
 
   // One step, once the tracked points have moved to t_k+1.
   // in:  k; the saddles of V_k (only to orient cuts; may be empty), fNext = f(., t_k+1), the
@@ -135,6 +138,7 @@ class Surgery {
   std::vector<std::size_t> trackedAs_;          // per point: its index in the pipeline's Tracker
   std::vector<TopologyEvent> events_;           // the morph's, in order
   std::size_t next_ = 0;                        // the first event of a step not yet seen
+  bool refineStretched_ = false;                // stretched edges are split (from the start, or after a cut)
 };
 
 // in:  cut (after surgery)

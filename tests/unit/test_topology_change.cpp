@@ -288,7 +288,7 @@ TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
   const std::vector<TopologyEvent> events = {EventAt(g, {14, 14, 14}, TopologyEventKind::HandleGained),  // 7 cells away
                                              EventAt(g, {7, 7, 7}, TopologyEventKind::ComponentBorn),
                                              EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)};
-  Surgery surgery(sphere, cell, cell, events, std::vector<EventCut>(events.size(), EventCut::Planned));
+  Surgery surgery(sphere, cell, cell, events, std::vector<EventCut>(events.size(), EventCut::Planned), false);
   EXPECT_TRUE(surgery.Acts(0));
   surgery.Step(0, {}, f, tracker);
   ASSERT_EQ(surgery.Outcomes().size(), 3u);
@@ -320,7 +320,7 @@ TEST(Surgery, PinchingNeckLosesABand) {
   Tracker tracker(points, std::vector<double>(points.size(), 0.0));
   const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
   const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
-  Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned});
+  Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned}, false);
   surgery.Step(0, {}, f, tracker);
   ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
   Mesh cut;

@@ -91,7 +91,7 @@ const Open kOpen[] = {
     {"ring3", "sphere", 48, kLongest},
     {"ring3", "sphere", 64, kLongest},
     {"ring3", "sphere", 96, kLongest},
-    {"sphere", "ring2", 128, kCut | kFlipped | kLongest},
+    {"sphere", "ring2", 128, kCut | kCoverage | kFlipped | kLongest},
     {"sphere", "ring2", 48, kFlipped | kLongest},
     {"sphere", "ring2", 64, kLongest},
     {"sphere", "ring3", 128, kCut | kLongest},
