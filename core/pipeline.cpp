@@ -380,20 +380,36 @@ void Adopt(Result &to, Result &from) {
 // (morph_topology.h), which of those events surgery acts on (surgery_plan.h), the step loop,
 // and the outputs and their figures. result.report starts from `base` (what the stages before
 // the morph filled in).
+// A morph's topology events (morph_topology.h) and which of them surgery acts on (surgery_plan.h).
+struct MorphEvents {
+  TopologyHistory history;
+  std::vector<EventCut> plan;
+  double seconds = 0;  // DEF time spent finding them
+};
+
+MorphEvents FindEvents(const Morph &morph, const Meshes &m, const Grid &grid, const Options &options,
+                       const Stage &stage) {
+  const auto t0 = Clock::now();
+  MorphEvents e;
+  e.history =
+      TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
+  e.plan = PlanSurgery(e.history.events, e.history.frames.front(), e.history.frames.back(), m.sourceSurface,
+                       m.targetSurface, grid.h, options.steps);
+  e.seconds = Seconds(t0);
+  return e;
+}
+
 void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vector<AnchorPair> &anchors,
-             const Options &options, const std::vector<Point3> &samples, const Morph &morph, const Report &base,
-             Result &result, const Stage &stage) {
+             const Options &options, const std::vector<Point3> &samples, const Morph &morph, MorphEvents events,
+             const Report &base, Result &result, const Stage &stage) {
   Report &rep = result.report;
   rep = base;
   rep.morphMode = morph.Describe();
+  const std::vector<EventCut> plan = std::move(events.plan);
+  rep.topologyAlongMorph = std::move(events.history.frames);
+  rep.topologyEvents = std::move(events.history.events);
+  rep.times.deform += events.seconds;
   auto t0 = Clock::now();
-  TopologyHistory history =
-      TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
-  const std::vector<EventCut> plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(),
-                                                 m.sourceSurface, m.targetSurface, grid.h, options.steps);
-  rep.topologyAlongMorph = std::move(history.frames);
-  rep.topologyEvents = std::move(history.events);
-  rep.times.deform += Seconds(t0);
 
   Tracker tracker = StartTracking(m, fields, samples);
   Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan,
@@ -532,28 +548,27 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   t0 = Clock::now();
   auto linear = std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b);
   rep.times.interp += Seconds(t0);
+  MorphEvents linearEvents = FindEvents(*linear, m, grid, options, stage);  // found once, used by its attempt
   std::vector<Morph::Blend> order = {Morph::Blend::Linear};
-  if (linear->mode() == Morph::Mode::LinearBlend) {
-    const TopologyHistory history = TrackTopology(*linear, options.steps);
-    const std::vector<EventCut> plan = PlanSurgery(history.events, history.frames.front(), history.frames.back(),
-                                                   m.sourceSurface, m.targetSurface, grid.h, options.steps);
-    order = GrowsFromNothing(history.events, plan) ? std::vector<Morph::Blend>{Morph::Blend::GrowShrink, Morph::Blend::Linear}
-                                                   : std::vector<Morph::Blend>{Morph::Blend::Linear, Morph::Blend::GrowShrink};
-  }
+  if (linear->mode() == Morph::Mode::LinearBlend)
+    order = GrowsFromNothing(linearEvents.history.events, linearEvents.plan)
+                ? std::vector<Morph::Blend>{Morph::Blend::GrowShrink, Morph::Blend::Linear}
+                : std::vector<Morph::Blend>{Morph::Blend::Linear, Morph::Blend::GrowShrink};
   const Report base = rep;
   for (std::size_t n = 0; n < order.size(); ++n) {
     t0 = Clock::now();
     const auto morph = order[n] == Morph::Blend::Linear ? std::move(linear)
                                                         : std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b, order[n]);
     const double setup = Seconds(t0);
+    MorphEvents events = order[n] == Morph::Blend::Linear ? std::move(linearEvents) : FindEvents(*morph, m, grid, options, stage);
     if (n == 0) {
-      Attempt(m, fields, grid, anchors, options, samples, *morph, base, result, stage);
+      Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, result, stage);
       result.report.times.interp += setup;
       if (Failures(result.report) == 0) break;
       continue;
     }
     Result other;
-    Attempt(m, fields, grid, anchors, options, samples, *morph, base, other, stage);
+    Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, other, stage);
     other.report.times.interp += setup;
     const std::string first = Summary(result.report), second = Summary(other.report);
     const bool keepOther = Better(other.report, result.report);
