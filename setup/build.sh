@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs what the build needs (Debian packages), fetches Debian's meshlab source
 # packages for the MeshLab/vcglib headers (2020.09 from bookworm, 2025.07 from sid),
-# creates .venv with pymeshlab 2025.7.post1 and pytest, and configures and builds both
-# plugin flavours into build/. Safe to run twice: installed packages, the fetched trees,
-# the venv and the build are reused.
+# creates .venv with pymeshlab 2025.7.post1 and pytest, configures and builds both
+# plugin flavours into build/, and builds the Python package's wheel (pymeshlab flavour,
+# into build-wheel/dist/) and installs it into .venv (setup/python-package.sh). Safe to run
+# twice: installed packages, the fetched trees, the venv and the builds are reused.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -47,3 +48,7 @@ echo "== configuring and building in build/"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DEULERMAP_MESHLAB_2020_SOURCE="$src2020" -DEULERMAP_BUILD_PLUGIN_2020=ON "${pymeshlab_flavour[@]}" >/dev/null
 cmake --build build
+if [ ${#pymeshlab_flavour[@]} -gt 0 ]; then
+  echo "== building the Python package's wheel (pip wheel .) into build-wheel/dist/ and installing it into .venv"
+  bash setup/python-package.sh "$src2025"
+fi

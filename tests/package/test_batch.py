@@ -1,0 +1,183 @@
+"""`eulermap batch` on a Dask LocalCluster of 2 worker processes (issue 16), from the
+fresh venv of tests/package/run.
+
+Seven pairs onto the sample torus at grid 32: six shapes that map (the sample sphere,
+spot, the cow, an ellipsoid, the rocker arm, the torus itself) and one that cannot (a
+point cloud: the filter refuses a mesh without faces). Checks that
+  - every pair is in summary.csv and summary.html, with every figure of the report, and
+    the figures of each mapped pair equal those of a single `eulermap map` of that pair
+    (same parameters, same OpenMP thread count: 1, as each worker has), times aside;
+  - the bad pair is recorded as failed with the filter's message, and the others are mapped;
+  - the pairs really ran in the cluster's worker processes (two of them);
+  - each mapped pair has its files (mapped vertices on the torus) and a thumbnail that
+    shows three shapes;
+  - a second run maps nothing (every pair finished: result.json untouched); after two
+    pairs are lost (as when a run is interrupted: one folder gone, one left half-written as
+    .partial) a run from a CSV of the same pairs maps those two only and the table is the same.
+"""
+import csv
+import json
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import time
+import zlib
+
+import numpy as np
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+SAMPLES = os.path.join(ROOT, "samples")
+OUT = os.path.join(ROOT, "out", "package", "batch")
+sys.path.insert(0, os.path.join(ROOT, "tests", "meshlab"))
+sys.path.insert(0, HERE)
+import meshes  # noqa: E402
+from test_package import point_cloud  # noqa: E402
+
+BIN = os.path.dirname(sys.executable)
+PARAMS = ["--grid", "32", "--steps", "16"]
+SINGLE_ENV = dict(os.environ, OMP_NUM_THREADS="1")  # as each LocalCluster worker runs its pair
+TIMES = ("time_", "wall_s")
+
+
+def write_ply(path, verts, faces):
+    with open(path, "w") as f:
+        f.write(f"ply\nformat ascii 1.0\nelement vertex {len(verts)}\nproperty float x\nproperty float y\n"
+                f"property float z\nelement face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+        f.write("".join(f"{x:.7g} {y:.7g} {z:.7g}\n" for x, y, z in verts))
+        f.write("".join(f"3 {a} {b} {c}\n" for a, b, c in faces))
+    return path
+
+
+@pytest.fixture(scope="module")
+def inputs():
+    """The template and the shapes, in out/package/batch/inputs (copies without the .pp
+    files beside the samples: the torus has none, so anchors would not match)."""
+    d = os.path.join(OUT, "inputs")
+    shutil.rmtree(OUT, ignore_errors=True)
+    os.makedirs(d)
+    for f in ("torus.ply", "torus_checker.png", "sphere.ply", "spot.ply", "spot_checker.png", "cow.off",
+              "rocker-arm.ply"):
+        shutil.copy(os.path.join(SAMPLES, f), d)
+    s = meshes.read_mesh(os.path.join(SAMPLES, "sphere.ply"))
+    write_ply(os.path.join(d, "ellipsoid.ply"), np.asarray(s.verts) * [1.3, 0.9, 0.7], s.faces)
+    point_cloud(os.path.join(d, "cloud.ply"))
+    shapes = ["sphere.ply", "spot.ply", "cow.off", "ellipsoid.ply", "cloud.ply", "rocker-arm.ply", "torus.ply"]
+    return os.path.join(d, "torus.ply"), [os.path.join(d, s) for s in shapes]
+
+
+def batch(*args):
+    started = time.perf_counter()
+    r = subprocess.run([os.path.join(BIN, "eulermap"), "batch", *args, *PARAMS, "--workers", "2"],
+                       capture_output=True, text=True, timeout=900)
+    print(f"\n    eulermap batch {' '.join(a for a in args if not a.startswith('/'))}: "
+          f"{time.perf_counter() - started:.1f} s")
+    print("    " + "\n    ".join(l for l in r.stderr.splitlines() if l.startswith(("eulermap batch", "  ")) or ": " in l
+                                 and "it/s" not in l and "pair/s" not in l and "s/pair" not in l))
+    return r
+
+
+def table(out):
+    with open(os.path.join(out, "summary.csv"), newline="") as f:
+        return {row["name"]: row for row in csv.DictReader(f)}
+
+
+def result_files(out):
+    return {name: (os.stat(p).st_mtime_ns, open(p).read()) for name in os.listdir(os.path.join(out, "pairs"))
+            for p in [os.path.join(out, "pairs", name, "result.json")] if os.path.isfile(p)}
+
+
+def png_panels(path, panels=3):
+    """Reads back the thumbnail (8-bit RGB PNG as thumbnail.py writes it): the share of
+    non-white pixels in each panel."""
+    data = open(path, "rb").read()
+    w, h = struct.unpack(">II", data[16:24])
+    idat, i = b"", 8
+    while i < len(data):
+        n, kind = struct.unpack(">I4s", data[i:i + 8])
+        if kind == b"IDAT":
+            idat += data[i + 8:i + 8 + n]
+        i += 12 + n
+    raw = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(h, 1 + 3 * w)
+    assert (raw[:, 0] == 0).all()
+    image = raw[:, 1:].reshape(h, w, 3)
+    width = (w - 4 * (panels - 1)) // panels
+    return [float((image[:, k * (width + 4):k * (width + 4) + width] < 250).any(axis=2).mean()) for k in range(panels)]
+
+
+def test_batch_on_a_local_cluster(inputs):
+    template, shapes = inputs
+    out = os.path.join(OUT, "run")
+    r = batch(template, *shapes, "--out", out)
+    assert r.returncode == 1, "a pair failed: the exit status says so"  # the point cloud
+    assert "7 pairs, 0 finished before (skipped), 7 to map" in r.stderr and ", 2 workers" in r.stderr, r.stderr
+    rows = table(out)
+    names = [os.path.splitext(os.path.basename(s))[0] + "_to_torus" for s in shapes]
+    assert list(rows) == names
+
+    bad = rows.pop("cloud_to_torus")
+    assert bad["status"] == "failed" and "has no faces" in bad["message"], bad
+    assert all(bad[k] == "" for k in bad if k.startswith(("coverage", "on_surface")))
+    assert "cloud_to_torus: FAILED: " in r.stderr
+    failed = [n for n, row in rows.items() if row["status"] != "ok"]
+    assert not failed, {n: rows[n]["message"] for n in failed}
+
+    workers = {json.load(open(os.path.join(out, "pairs", n, "result.json")))["worker"] for n in names}
+    assert len(workers) == 2 and all(int(w.split(":")[1]) != os.getpid() for w in workers), workers
+
+    # every figure of the report, equal to a single run's
+    torus = meshes.read_mesh(template)
+    for name, shape in zip(names, shapes):
+        if name not in rows:
+            continue
+        single = os.path.join(OUT, "single", name)
+        s = subprocess.run([os.path.join(BIN, "eulermap"), "map", shape, template, single, *PARAMS, "-q",
+                            "--no-progress"], capture_output=True, text=True, timeout=300, env=SINGLE_ENV)
+        assert s.returncode == 0, s.stderr
+        figures = json.load(open(os.path.join(single, "figures.json")))
+        row = rows[name]
+        assert set(figures) - {"wall_s"} <= set(row), f"{name}: figures missing from the table"
+        for k, v in figures.items():
+            if not k.startswith(TIMES):
+                assert float(row[k]) == v, f"{name}: {k} is {row[k]} in the table, {v} in a single run"
+        mapped = meshes.read_mesh(os.path.join(out, "pairs", name, "mapped.ply"))
+        rate = meshes.on_surface_rate(mapped.verts, torus, 0.005 * meshes.diagonal(torus.verts))
+        print(f"    {name}: coverage {100 * figures['coverage']:.2f}%, on-surface {100 * rate:.2f}%, "
+              f"{figures['cut_vertices']} vertices; as single run: equal")
+        assert rate >= 0.99 and len(mapped.verts) == int(row["cut_vertices"])
+        inked = png_panels(os.path.join(out, "pairs", name, "thumbnail.png"))
+        assert all(0.05 < share < 0.9 for share in inked), f"{name}: thumbnail panels inked {inked}"
+
+    page = open(os.path.join(out, "summary.html")).read()
+    assert page.count('<tr class="ok">') == 6 and page.count('<tr class="failed">') == 1
+    assert page.count("thumbnail.png") == 6 and "has no faces" in page
+
+    # resume: nothing left to do
+    before = result_files(out)
+    r = batch(template, *shapes, "--out", out)
+    assert "7 pairs, 7 finished before (skipped), 0 to map" in r.stderr and "Dask scheduler" not in r.stderr
+    assert result_files(out) == before and r.returncode == 1
+    assert table(out) == dict(rows, cloud_to_torus=bad)
+
+    # resume after an interruption: two pairs lost, one half-written; the CSV form of the same pairs
+    shutil.rmtree(os.path.join(out, "pairs", "spot_to_torus"))
+    os.replace(os.path.join(out, "pairs", "cow_to_torus"), os.path.join(out, "pairs", "cow_to_torus.partial"))
+    os.remove(os.path.join(out, "pairs", "cow_to_torus.partial", "result.json"))
+    pairs = os.path.join(OUT, "pairs.csv")
+    with open(pairs, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["source", "target", "name"])
+        w.writerows([os.path.relpath(s, OUT), os.path.relpath(template, OUT), n] for s, n in zip(shapes, names))
+    kept = {n: v for n, v in before.items() if n not in ("spot_to_torus", "cow_to_torus")}
+    r = batch("--pairs", pairs, "--out", out)
+    assert "7 pairs, 5 finished before (skipped), 2 to map" in r.stderr, r.stderr
+    after = result_files(out)
+    assert {n: after[n] for n in kept} == kept, "a finished pair was mapped again"
+    assert set(after) == set(before) and not os.path.exists(os.path.join(out, "pairs", "cow_to_torus.partial"))
+    again = table(out)
+    for name in ("spot_to_torus", "cow_to_torus"):
+        assert {k: v for k, v in again[name].items() if not k.startswith(TIMES)} == \
+               {k: v for k, v in rows[name].items() if not k.startswith(TIMES)}
