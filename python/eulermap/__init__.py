@@ -20,7 +20,7 @@ import importlib.metadata as _metadata
 import os as _os
 import re as _re
 
-__all__ = ["FILTER", "PLUGIN", "PYMESHLAB_REQUIRED", "map_meshes", "map_files", "parameters", "MapResult"]
+__all__ = ["FILTER", "PLUGIN", "PYMESHLAB_REQUIRED", "map_meshes", "map_files", "parameters", "progress_bar", "MapResult"]
 
 
 def _required_pymeshlab():
@@ -55,4 +55,4 @@ if FILTER not in _pymeshlab.filter_list():  # a second load_plugin of the same f
         raise ImportError(f"{PLUGIN} missing: the eulermap wheel is incomplete, reinstall it")
     _pymeshlab.load_plugin(PLUGIN)
 
-from ._mapping import MapResult, map_files, map_meshes, parameters  # noqa: E402
+from ._mapping import MapResult, map_files, map_meshes, parameters, progress_bar  # noqa: E402

@@ -10,6 +10,7 @@ thread reads line by line: progress reports go to the caller's callback as they 
 lines to the caller's list, anything else on to the real standard error.
 """
 import collections
+import contextlib
 import json
 import os
 import re
@@ -100,6 +101,12 @@ def map_meshes(ms, source, target, *, progress=None, log=None, **parameters):
     in_header = [False]  # inside the header pymeshlab prints before the filter (up to its dict)
 
     def on_line(line):
+        start = line.find("LOG: ")
+        if start > 0 and _LOG_LINE.match(line[start:]):
+            # Something wrote to fd 2 without a newline just before (a progress bar drawn on
+            # sys.stderr, say): pass it on as it was.
+            pipe.stderr.write(line[:start])
+            line = line[start:]
         m = _LOG_LINE.match(line)
         if m:
             p = _PROGRESS.match(m.group(1))
@@ -124,6 +131,31 @@ def map_meshes(ms, source, target, *, progress=None, log=None, **parameters):
         raise
     finally:
         ms.set_verbosity(False)
+
+
+@contextlib.contextmanager
+def progress_bar(**tqdm_options):
+    """A tqdm progress bar over the filter's stages: `with progress_bar() as p:
+    map_meshes(ms, 0, 1, progress=p)`. It draws on a duplicate of standard error taken
+    when the block starts (while the filter runs, file descriptor 2 goes to the pipe that
+    map_meshes reads); the bar's text is the stage the filter reports."""
+    from tqdm import tqdm
+    stream = os.fdopen(os.dup(2), "w", buffering=1)
+    options = dict(total=100, unit="%", desc="starting", file=stream,
+                   bar_format="{desc:<28.28} {percentage:3.0f}%|{bar}| {elapsed}")
+    options.update(tqdm_options)
+    bar = tqdm(**options)
+
+    def update(percent, stage):
+        bar.set_description_str(stage, refresh=False)
+        bar.n = percent
+        bar.refresh()  # a redraw for each report (a few dozen a map), so that each stage shows
+
+    try:
+        yield update
+    finally:
+        bar.close()
+        stream.close()
 
 
 def parameters():

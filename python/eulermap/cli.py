@@ -11,6 +11,7 @@ filter's stages (from the progress reports the filter sends through pymeshlab's 
 then the filter's report; `eulermap batch` one over the pairs.
 """
 import argparse
+import contextlib
 import os
 import sys
 
@@ -38,33 +39,22 @@ def _chosen(args, names):
 
 def _map(args, names):
     import pymeshlab
-    from tqdm import tqdm
 
-    from . import map_files
+    from . import map_files, progress_bar
     for f in (args.source, args.target):
         if not os.path.isfile(f):
             print(f"eulermap map: no such mesh file: {f}", file=sys.stderr)
             return 2
-    bar = None if args.no_progress else tqdm(total=100, unit="%", desc="starting", file=sys.stderr,
-                                              bar_format="{desc:<34.34} {percentage:3.0f}%|{bar}| {elapsed}")
-
-    def progress(percent, stage):
-        bar.set_description_str(stage, refresh=False)
-        bar.update(percent - bar.n)
-
+    bar = contextlib.nullcontext() if args.no_progress else progress_bar()
     try:
-        result = map_files(args.source, args.target, args.outdir, progress=progress if bar else None,
-                           **_chosen(args, names))
+        with bar as progress:
+            result = map_files(args.source, args.target, args.outdir, progress=progress, **_chosen(args, names))
     except pymeshlab.PyMeshLabException as e:
-        if bar:
-            bar.close()
         report = os.path.join(args.outdir, "report.txt")
         if os.path.isfile(report) and not args.quiet:
             print(open(report).read(), end="")
         print(f"eulermap map: the map failed: {e}", file=sys.stderr)
         return 1
-    if bar:
-        bar.close()
     if not args.quiet:
         print("\n".join(result.log))
     out = os.path.abspath(args.outdir)
