@@ -84,6 +84,14 @@ def _forget_failed_filter():
     pymeshlab.MeshSet().create_tetrahedron()
 
 
+def failure_message(error):
+    """The filter's own message in a PyMeshLabException ("Failed to apply filter: NAME
+    Details: <message>" from pymeshlab), or the exception's text."""
+    text = str(error).strip()
+    m = re.match(r"Failed to apply filter: \S+\s+Details:\s*(.*)$", text, re.S)
+    return (m.group(1).strip() if m else text) or type(error).__name__
+
+
 def map_meshes(ms, source, target, *, progress=None, log=None, **parameters):
     """Maps layer `source` of MeshSet `ms` onto layer `target` with the Eulerian Surface Map
     filter and returns the report's figures (dict: on_surface_rate, coverage, ...; rates

@@ -92,6 +92,7 @@ def run_pair(job, thumbnails=True):
     started = time.perf_counter()
     try:
         from . import map_files
+        from ._mapping import failure_message
         for path in (job["source"], job["target"]):
             if not os.path.isfile(path):
                 raise FileNotFoundError(f"no such mesh file: {path}")
@@ -104,7 +105,7 @@ def run_pair(job, thumbnails=True):
             except Exception as e:  # a picture is not worth failing a pair
                 result["message"] = f"no thumbnail: {e}"
     except (pymeshlab.PyMeshLabException, OSError, ImportError) as e:
-        result.update(status="failed", message=str(e).strip() or type(e).__name__, figures={})
+        result.update(status="failed", message=failure_message(e), figures={})
     except Exception as e:
         result.update(status="failed", message=f"{type(e).__name__}: {e}", figures={},
                       traceback=traceback.format_exc())
@@ -168,35 +169,46 @@ def run(jobs, out, scheduler=None, workers=None, threads_per_pair=1, retry_faile
     print(f"eulermap batch: {len(jobs)} pairs, {len(results)} finished before (skipped), {len(todo)} to map",
           file=log)
     if todo:
-        cluster = None if scheduler else _local_cluster(workers, threads_per_pair)
-        with Client(scheduler or cluster) as client:
-            print(f"eulermap batch: Dask scheduler {client.scheduler.address}, "
-                  f"{len(client.scheduler_info()['workers'])} workers", file=log)
-            futures = {client.submit(run_pair, job, thumbnails, key=f"eulermap-{job['name']}-{job['key']}",
-                                     pure=False): job for job in todo}
-            bar = tqdm(total=len(todo), unit="pair", file=sys.stderr, disable=not progress)
-            for future in as_completed(futures):
-                job = futures[future]
-                try:
-                    result = future.result()
-                except Exception as e:  # the task itself was lost (e.g. KilledWorker)
-                    result = _record_lost(job, f"the worker running it died: {type(e).__name__}: {e}")
-                results[job["name"]] = result
-                f = result["figures"]
-                line = (f"{job['name']}: ok, coverage {100 * f['coverage']:.2f}%, on-surface "
-                        f"{100 * f['on_surface_rate']:.2f}%, {result['wall_s']:.1f} s"
-                        if result["status"] == "ok" else f"{job['name']}: FAILED: {result['message']}")
-                bar.write(line, file=log)
-                bar.update(1)
-            bar.close()
-        if cluster is not None:
-            cluster.close()
+        cluster = None
+        try:
+            cluster = None if scheduler else _local_cluster(workers, threads_per_pair)
+            with Client(scheduler or cluster) as client:
+                print(f"eulermap batch: Dask scheduler {client.scheduler.address}, "
+                      f"{len(client.scheduler_info()['workers'])} workers", file=log)
+                futures = {client.submit(run_pair, job, thumbnails, key=f"eulermap-{job['name']}-{job['key']}",
+                                         pure=False): job for job in todo}
+                with tqdm(total=len(todo), unit="pair", file=sys.stderr, disable=not progress) as bar:
+                    for future in as_completed(futures):
+                        job = futures[future]
+                        try:
+                            result = future.result()
+                        except Exception as e:  # the task itself was lost (e.g. KilledWorker)
+                            result = _record_lost(job, f"the worker running it died: {type(e).__name__}: {e}")
+                        results[job["name"]] = result
+                        bar.write(_line(result), file=log)
+                        bar.update(1)
+        except KeyboardInterrupt:
+            print(f"eulermap batch: interrupted; {len(results)} of {len(jobs)} pairs finished: the same command "
+                  f"maps the others", file=log)
+            raise
+        finally:
+            if cluster is not None:
+                cluster.close()
     ordered = [results[job["name"]] for job in jobs]
     write_summary(ordered, out)
     failed = sum(r["status"] != "ok" for r in ordered)
     print(f"eulermap batch: {len(ordered) - failed} ok, {failed} failed; summary in "
           f"{os.path.join(os.path.abspath(out), 'summary.csv')} and summary.html", file=log)
     return ordered
+
+
+def _line(result):
+    """One line about a finished pair."""
+    f = result["figures"]
+    if result["status"] != "ok":
+        return f"{result['name']}: FAILED: {result['message']}"
+    return (f"{result['name']}: ok, coverage {100 * f['coverage']:.2f}%, on-surface {100 * f['on_surface_rate']:.2f}%, "
+            f"{result['wall_s']:.1f} s")
 
 
 def _figure_names(results):

@@ -41,6 +41,7 @@ def _map(args, names):
     import pymeshlab
 
     from . import map_files, progress_bar
+    from ._mapping import failure_message
     for f in (args.source, args.target):
         if not os.path.isfile(f):
             print(f"eulermap map: no such mesh file: {f}", file=sys.stderr)
@@ -53,7 +54,7 @@ def _map(args, names):
         report = os.path.join(args.outdir, "report.txt")
         if os.path.isfile(report) and not args.quiet:
             print(open(report).read(), end="")
-        print(f"eulermap map: the map failed: {e}", file=sys.stderr)
+        print(f"eulermap map: the map failed: {failure_message(e)}", file=sys.stderr)
         return 1
     if not args.quiet:
         print("\n".join(result.log))
@@ -71,9 +72,12 @@ def _batch(args, names):
     except (ValueError, OSError) as e:
         print(f"eulermap batch: {e}", file=sys.stderr)
         return 2
-    summary = batch.run(jobs, args.out, scheduler=args.scheduler, workers=args.workers,
-                        threads_per_pair=args.threads_per_pair, retry_failed=args.retry_failed,
-                        progress=not args.no_progress, thumbnails=not args.no_thumbnails)
+    try:
+        summary = batch.run(jobs, args.out, scheduler=args.scheduler, workers=args.workers,
+                            threads_per_pair=args.threads_per_pair, retry_failed=args.retry_failed,
+                            progress=not args.no_progress, thumbnails=not args.no_thumbnails)
+    except KeyboardInterrupt:
+        return 130
     return 0 if all(r["status"] == "ok" for r in summary) else 1
 
 

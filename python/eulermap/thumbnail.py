@@ -35,7 +35,17 @@ def draw(verts, faces, face_colors, size=SIZE):
     shade = 0.3 + 0.7 * np.abs(n[:, 2])  # two-sided: a cut surface shows its inside too
     colors = np.clip(np.asarray(face_colors) * shade[:, None] * 255, 0, 255).astype(np.uint8)
     depth = np.full((size, size), -np.inf)
-    for f, (a, b, c) in enumerate(tri):
+    # Faces within about a pixel (most, on a small picture of a dense mesh) are drawn as
+    # their centre's pixel, nearest last; the larger ones are rasterised below.
+    cx, cy, cz = x[tri].mean(1), y[tri].mean(1), z[tri].mean(1)
+    span = np.maximum(np.ptp(x[tri], 1), np.ptp(y[tri], 1))
+    small = np.flatnonzero((span <= 1.5) & (cx >= 0) & (cx < size) & (cy >= 0) & (cy < size))
+    order = small[np.argsort(cz[small])]
+    px, py = cx[order].astype(int), cy[order].astype(int)
+    image[py, px] = colors[order]
+    depth[py, px] = cz[order]
+    for f in np.flatnonzero(span > 1.5):
+        a, b, c = tri[f]
         xs, ys = x[[a, b, c]], y[[a, b, c]]
         x0, x1 = max(int(math.floor(xs.min())), 0), min(int(math.ceil(xs.max())), size - 1)
         y0, y1 = max(int(math.floor(ys.min())), 0), min(int(math.ceil(ys.max())), size - 1)
