@@ -97,7 +97,8 @@ def run_pair(job, thumbnails=True):
             if not os.path.isfile(path):
                 raise FileNotFoundError(f"no such mesh file: {path}")
         mapped = map_files(job["source"], job["target"], partial, **job["parameters"])
-        result.update(status="ok", message="", figures=mapped.figures)
+        result.update(status="ok", message="", figures=mapped.figures,
+                      warnings=[line for line in mapped.log if line.startswith("warning:")])
         if thumbnails:
             from .thumbnail import render_pair
             try:
@@ -252,6 +253,9 @@ def write_summary(results, out):
                          for n in ("cut.ply", "mapped.ply", "report.txt") if os.path.isfile(os.path.join(out, pair, n)))
         cells = [picture] + [cell(row[k]) for k in SUMMARY_FIRST + figures]
         cells[1] = f"{cells[1]}<br><small>{links}</small>"
+        if r.get("warnings"):  # the log's warning lines, beside the figures' count of them
+            cells[3] = (cells[3] + "<br>" if cells[3] else "") + "<br>".join(
+                f"<small>{html.escape(w)}</small>" for w in r["warnings"])
         cls = "ok" if r["status"] == "ok" else "failed"
         body.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     ok = sum(r["status"] == "ok" for r in results)
@@ -263,7 +267,7 @@ table {{ border-collapse: collapse; }}
 td, th {{ border: 1px solid #ccc; padding: 3px 6px; text-align: right; white-space: nowrap; }}
 th {{ background: #eee; position: sticky; top: 0; }}
 tr.failed td {{ background: #fdd; }}
-td:nth-child(4) {{ white-space: normal; max-width: 28em; text-align: left; }}
+td:nth-child(4) {{ white-space: normal; min-width: 24em; max-width: 40em; text-align: left; }}
 </style></head><body>
 <h1>eulermap batch: {ok} of {len(results)} pairs mapped</h1>
 <p>Each picture: the source, the target, and the mapped source on the target coloured by distortion
