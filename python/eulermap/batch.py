@@ -252,6 +252,10 @@ def write_summary(results, out):
         links = " ".join(f'<a href="{html.escape(pair)}/{n}">{n}</a>'
                          for n in ("cut.ply", "mapped.ply", "report.txt") if os.path.isfile(os.path.join(out, pair, n)))
         cells = [picture] + [cell(row[k]) for k in SUMMARY_FIRST + figures]
+        for i in (4, 5):  # source, target: the file's name, its path on hovering
+            path = row[SUMMARY_FIRST[i - 1]]
+            cells[i] = f'<span title="{html.escape(path)}">{html.escape(os.path.basename(path))}</span>'
+
         cells[1] = f"{cells[1]}<br><small>{links}</small>"
         if r.get("warnings"):  # the log's warning lines, beside the figures' count of them
             cells[3] = (cells[3] + "<br>" if cells[3] else "") + "<br>".join(
@@ -267,6 +271,7 @@ table {{ border-collapse: collapse; }}
 td, th {{ border: 1px solid #ccc; padding: 3px 6px; text-align: right; white-space: nowrap; }}
 th {{ background: #eee; position: sticky; top: 0; }}
 tr.failed td {{ background: #fdd; }}
+td:nth-child(2) {{ text-align: left; }}
 td:nth-child(4) {{ white-space: normal; min-width: 24em; max-width: 40em; text-align: left; }}
 </style></head><body>
 <h1>eulermap batch: {ok} of {len(results)} pairs mapped</h1>
