@@ -6,7 +6,7 @@ OUT/pairs/<name>.partial/, which becomes OUT/pairs/<name>/ once its result.json 
 message, figures, the key of its inputs) is written, by the worker itself: a pair is
 finished exactly when OUT/pairs/<name>/result.json exists, whatever happens to the client.
 A second run skips the finished pairs whose key (the contents of both mesh files and of the
-.pp files beside them, the parameters, eulermap's version) is unchanged, and rebuilds
+.pp files beside them, the parameters, eulermap's version and plugin) is unchanged, and rebuilds
 OUT/summary.csv and OUT/summary.html from all the pairs' result.json.
 
 A pair that fails (the filter's message, a file pymeshlab cannot read, a worker that dies)
@@ -31,11 +31,17 @@ def _stem(path):
     return os.path.splitext(os.path.basename(path))[0]
 
 
-def _key(source, target, parameters):
+def _plugin_digest():
+    from . import PLUGIN
+    with open(PLUGIN, "rb") as f:
+        return hashlib.sha256(f.read()).digest()
+
+
+def _key(source, target, parameters, plugin_digest):
     """What a finished pair's result depends on: the input files (and the .pp beside each,
-    the anchors the filter reads), the parameters and eulermap's version."""
+    the anchors the filter reads), the parameters, eulermap's version and its plugin."""
     from . import __version__
-    h = hashlib.sha256()
+    h = hashlib.sha256(plugin_digest)
     for path in (source, target):
         for f in (path, os.path.splitext(path)[0] + ".pp"):
             if os.path.isfile(f):
@@ -160,8 +166,9 @@ def run(jobs, out, scheduler=None, workers=None, threads_per_pair=1, retry_faile
 
     os.makedirs(os.path.join(out, "pairs"), exist_ok=True)
     results, todo = {}, []
+    digest = _plugin_digest()
     for job in jobs:
-        job["key"] = _key(job["source"], job["target"], job["parameters"])
+        job["key"] = _key(job["source"], job["target"], job["parameters"], digest)
         done = finished(job)
         if done and not (retry_failed and done["status"] != "ok"):
             results[job["name"]] = done
@@ -174,6 +181,11 @@ def run(jobs, out, scheduler=None, workers=None, threads_per_pair=1, retry_faile
         try:
             cluster = None if scheduler else _local_cluster(workers, threads_per_pair)
             with Client(scheduler or cluster) as client:
+                try:
+                    client.wait_for_workers(1, timeout=120)
+                except (TimeoutError, OSError) as e:
+                    raise RuntimeError(f"the Dask scheduler {client.scheduler.address} has no worker after "
+                                       f"2 minutes: start some (dask worker {client.scheduler.address})") from e
                 print(f"eulermap batch: Dask scheduler {client.scheduler.address}, "
                       f"{len(client.scheduler_info()['workers'])} workers", file=log)
                 futures = {client.submit(run_pair, job, thumbnails, key=f"eulermap-{job['name']}-{job['key']}",

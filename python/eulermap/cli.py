@@ -78,6 +78,9 @@ def _batch(args, names):
                             progress=not args.no_progress, thumbnails=not args.no_thumbnails)
     except KeyboardInterrupt:
         return 130
+    except (RuntimeError, OSError) as e:  # no scheduler at that address, no worker
+        print(f"eulermap batch: {e}", file=sys.stderr)
+        return 2
     return 0 if all(r["status"] == "ok" for r in summary) else 1
 
 

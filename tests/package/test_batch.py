@@ -14,7 +14,8 @@ point cloud: the filter refuses a mesh without faces). Checks that
   - a run interrupted (SIGINT) after its first finished pair exits 130; the same command
     again maps the others only (the finished pairs' result.json untouched, no .partial
     left); a third run maps nothing and starts no cluster; after a pair's folder is removed,
-    a run from a CSV of the same pairs maps that pair only, to the same figures.
+    a run from a CSV of the same pairs maps that pair only, to the same figures;
+  - --scheduler ADDRESS: two pairs on a scheduler and a worker started with dask's commands.
 """
 import csv
 import json
@@ -200,3 +201,45 @@ def test_batch_on_a_local_cluster(inputs):
     again = table(out)
     assert {k: v for k, v in again["spot_to_torus"].items() if not k.startswith(TIMES)} == \
            {k: v for k, v in rows["spot_to_torus"].items() if not k.startswith(TIMES)}
+
+
+def test_batch_on_a_running_scheduler(inputs):
+    """--scheduler: a scheduler and a worker started apart (dask's own commands, as on a
+    cluster), two pairs mapped by that worker, to the figures of single runs."""
+    template, shapes = inputs
+    out = os.path.join(OUT, "scheduler")
+    address_file = os.path.join(OUT, "scheduler.json")
+    dask = os.path.join(BIN, "dask")
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    scheduler = subprocess.Popen([dask, "scheduler", "--scheduler-file", address_file, "--no-dashboard",
+                                  "--host", "127.0.0.1", "--port", "0"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    worker = None
+    try:
+        started = time.perf_counter()
+        while not os.path.isfile(address_file) and time.perf_counter() - started < 60:
+            time.sleep(0.1)
+        address = json.load(open(address_file))["address"]
+        worker = subprocess.Popen([dask, "worker", address, "--nworkers", "1", "--nthreads", "1", "--no-dashboard"],
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+        pair_shapes = [s for s in shapes if os.path.basename(s) in ("sphere.ply", "ellipsoid.ply")]
+        r = subprocess.run([os.path.join(BIN, "eulermap"), "batch", template, *pair_shapes, "--out", out, *PARAMS,
+                            "--scheduler", address], capture_output=True, text=True, timeout=600)
+        print("\n    " + "\n    ".join(l for l in r.stderr.splitlines() if l.startswith(("eulermap", "sphere", "ell"))))
+        assert r.returncode == 0 and f"Dask scheduler {address}, 1 workers" in r.stderr, r.stderr
+    finally:
+        for p in (worker, scheduler):
+            if p is not None:
+                p.terminate()
+                p.wait(timeout=60)
+    rows = table(out)
+    assert list(rows) == ["sphere_to_torus", "ellipsoid_to_torus"]
+    for name, shape in zip(rows, pair_shapes):
+        single = os.path.join(OUT, "single", name, "figures.json")
+        if not os.path.isfile(single):
+            subprocess.run([os.path.join(BIN, "eulermap"), "map", shape, template, os.path.dirname(single), *PARAMS,
+                            "-q", "--no-progress"], check=True, capture_output=True, timeout=300, env=SINGLE_ENV)
+        figures = json.load(open(single))
+        result = json.load(open(os.path.join(out, "pairs", name, "result.json")))
+        assert result["status"] == "ok" and result["worker"].split(":")[1] != str(os.getpid())
+        assert {k: v for k, v in result["figures"].items() if not k.startswith(TIMES)} == \
+               {k: v for k, v in figures.items() if not k.startswith(TIMES)}
