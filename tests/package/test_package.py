@@ -170,3 +170,16 @@ def test_other_pymeshlab_is_refused(tmp_path):
     assert re.search(r"ImportError: eulermap's plugin is built for pymeshlab==2025\.7\.post1 .* this environment "
                      r"has pymeshlab 2023\.12\.post3\. Install the one it needs: pip install pymeshlab==2025\.7\.post1",
                      r.stderr), r.stderr
+
+
+def test_build_without_the_headers_says_what_is_missing(tmp_path):
+    """pip wheel . with no meshlab 2025.07 source tree: the build stops, naming the variable
+    and how to fetch the tree (pip runs the wheel's CMake project in its own environment)."""
+    r = subprocess.run([sys.executable, "-m", "pip", "wheel", "--disable-pip-version-check", "--no-deps", "-w",
+                        str(tmp_path / "dist"), "-C", f"build-dir={tmp_path / 'build'}", ROOT],
+                       capture_output=True, text=True, timeout=600,
+                       env=dict(os.environ, EULERMAP_MESHLAB_2025_SOURCE=str(tmp_path / "nothing")))
+    text = " ".join((r.stdout + r.stderr).split())
+    assert r.returncode != 0 and not glob.glob(str(tmp_path / "dist" / "*.whl"))
+    assert f"EULERMAP_MESHLAB_2025_SOURCE='{tmp_path / 'nothing'}' is not such a tree" in text, text[-2000:]
+    assert "setup/fetch-meshlab-source.sh 2025.07~dfsg .deps" in text
