@@ -133,12 +133,13 @@ def map_meshes(ms, source, target, *, progress=None, log=None, **parameters):
     ms.set_verbosity(True)
     try:
         with _OutputPipe(on_line) as pipe:
-            return ms.apply_filter(FILTER, source_mesh=source, target_mesh=target, **parameters)
+            try:
+                return ms.apply_filter(FILTER, source_mesh=source, target_mesh=target, **parameters)
+            finally:
+                ms.set_verbosity(False)  # before anything else runs a filter (below)
     except pymeshlab.PyMeshLabException:
         _forget_failed_filter()
         raise
-    finally:
-        ms.set_verbosity(False)
 
 
 @contextlib.contextmanager

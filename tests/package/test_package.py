@@ -146,6 +146,7 @@ def test_command_map(tmp_path):
     bad = subprocess.run([os.path.join(BIN, "eulermap"), "map", SPHERE, point_cloud(str(tmp_path / "cloud.ply")),
                           str(tmp_path / "bad"), "--no-progress", "-q"], capture_output=True, text=True, timeout=120)
     assert bad.returncode == 1 and "the map failed" in bad.stderr and "has no faces" in bad.stderr, bad.stderr
+    assert "Applying filter" not in bad.stdout + bad.stderr and "LOG:" not in bad.stdout + bad.stderr
 
 
 def test_other_pymeshlab_is_refused(tmp_path):
