@@ -13,6 +13,7 @@ python=.venv/bin/python
 [ -x "$python" ] || { echo "error: $python missing: setup/pymeshlab-venv.sh creates it" >&2; exit 1; }
 
 rm -f build-wheel/dist/eulermap-*.whl
+[ -d build-wheel ] || echo "   (the first time it compiles the core and the plugin for MeshLab 2025.07: minutes)" >&2
 EULERMAP_MESHLAB_2025_SOURCE="$src2025" "$python" -m pip wheel -q --disable-pip-version-check --no-deps \
   -w build-wheel/dist . >&2
 wheel="$(ls build-wheel/dist/eulermap-*.whl)"
