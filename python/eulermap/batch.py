@@ -9,7 +9,8 @@ A second run skips the finished pairs whose key (the contents of both mesh files
 .pp files beside them, the parameters, eulermap's version and plugin) is unchanged, and rebuilds
 OUT/summary.csv and OUT/summary.html from all the pairs' result.json.
 
-A pair that fails (the filter's message, a file pymeshlab cannot read, a worker that dies)
+A pair that fails (the filter's message, a file pymeshlab cannot read, a task that a worker
+could not run or died running)
 is recorded as failed with its message; the others go on. Failed pairs are finished too
 (mapped again with --retry-failed, or when their inputs change).
 """
@@ -90,6 +91,8 @@ def run_pair(job, thumbnails=True):
     written to result.json). Never raises for a failing pair: the failure is the result."""
     import pymeshlab
 
+    from ._mapping import failure_message, map_files
+
     final, partial = job["dir"], job["dir"] + ".partial"
     shutil.rmtree(partial, ignore_errors=True)
     os.makedirs(partial)
@@ -97,8 +100,6 @@ def run_pair(job, thumbnails=True):
                   parameters=job["parameters"], worker=f"{socket.gethostname()}:{os.getpid()}")
     started = time.perf_counter()
     try:
-        from . import map_files
-        from ._mapping import failure_message
         for path in (job["source"], job["target"]):
             if not os.path.isfile(path):
                 raise FileNotFoundError(f"no such mesh file: {path}")
@@ -125,7 +126,8 @@ def run_pair(job, thumbnails=True):
 
 
 def _record_lost(job, message):
-    """A pair whose task ended without a result (its worker died): recorded as failed."""
+    """A pair whose task ended without a result (its worker died, or could not run
+    run_pair): recorded as failed."""
     os.makedirs(job["dir"], exist_ok=True)
     result = dict(name=job["name"], source=job["source"], target=job["target"], key=job["key"],
                   parameters=job["parameters"], status="failed", message=message, figures={}, wall_s=None)
@@ -196,7 +198,8 @@ def run(jobs, out, scheduler=None, workers=None, threads_per_pair=1, retry_faile
                         try:
                             result = future.result()
                         except Exception as e:  # the task itself was lost (e.g. KilledWorker)
-                            result = _record_lost(job, f"the worker running it died: {type(e).__name__}: {e}")
+                            result = _record_lost(job, f"its task failed on the worker (not in the filter): "
+                                                       f"{type(e).__name__}: {e}")
                         results[job["name"]] = result
                         bar.write(_line(result), file=log)
                         bar.update(1)
