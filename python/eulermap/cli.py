@@ -115,9 +115,9 @@ def main(argv=None):
     b.add_argument("--scheduler", metavar="ADDRESS",
                    help="a running Dask scheduler (tcp://host:8786); its workers need eulermap installed and "
                         "the same paths (default: a LocalCluster on this machine)")
-    b.add_argument("--workers", type=int, default=None,
+    b.add_argument("--workers", type=int, default=None, metavar="N",
                    help="LocalCluster worker processes (default: cores / threads-per-pair)")
-    b.add_argument("--threads-per-pair", type=int, default=1,
+    b.add_argument("--threads-per-pair", type=int, default=1, metavar="K",
                    help="OpenMP threads each LocalCluster worker gives its pair (default 1)")
     b.add_argument("--retry-failed", action="store_true", help="map the pairs recorded as failed again")
     b.add_argument("--no-thumbnails", action="store_true", help="no pictures in the summary page")
