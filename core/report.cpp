@@ -135,8 +135,9 @@ std::string Report::ToText() const {
     if (rest > 0) o << Format(shown ? "; %zu smaller" : " %zu, each under 0.1%%", rest);
     o << "\n";
   }
-  o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target\n",
-              100 * quality.flippedBeforeUntangling, untangledVertices);
+  o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target, %d added where edges "
+              "stretched\n",
+              100 * quality.flippedBeforeUntangling, untangledVertices, stretchedSplit);
   if (!texture.empty()) o << Format("texture: %s\n", texture.c_str());
   if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
   for (const std::string &w : warnings) o << "warning: " << w << "\n";

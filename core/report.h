@@ -61,6 +61,7 @@ struct MapQuality {
   double flippedAreaShare = 0;  // area share of mapped faces facing against the target
   double flippedBeforeUntangling = 0;  // the same, of the map as tracked (before untangle.h)
   double longestEdgeCells = 0;  // longest mapped edge, in grid cells
+  double longestEdgeShare = 0;  // the same, over the target's bounding-box diagonal
   double anchorErrorCells = 0;  // largest |F(a_i) - b_i|, in grid cells (0 without anchors)
   std::vector<AnchorFigure> anchorFigures;  // per anchor pair, in order
   // The largest error over the anchors the grid resolves (AnchorFigure::Resolved); 0 if none.
@@ -122,7 +123,8 @@ struct Report {
   std::vector<TopologyFrame> topologyAlongMorph;  // f(., 0), then each frame where it changed
   std::vector<TopologyEvent> topologyEvents;     // every event, exact from f (zero_set_topology.h)
   std::vector<EventSurgery> surgery;            // one per topology event, in the same order
-  int untangledVertices = 0;  // vertices moved by untangle.h
+  int untangledVertices = 0;  // vertices moved by untangle.h (summed over its two runs: pipeline.cpp)
+  int stretchedSplit = 0;     // vertices added where the untangled map stretched edges (refine_stretched.h)
   std::string texture;        // what the cut's texture coordinates are (transfer.h); empty: not asked
   bool texCoordsPulled = false;
   int cutVertices = 0, cutFaces = 0;

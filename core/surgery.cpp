@@ -1,5 +1,7 @@
 #include "surgery.h"
 
+#include "refine_stretched.h"
+
 #include <vcg/complex/algorithms/hole.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
@@ -20,7 +22,6 @@ namespace eulermap {
 
 namespace {
 
-constexpr double kSplitCells = 2;    // tracked edges longer than this (in cells) are split there
 constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
 constexpr double kSpreadStretch = 2;  // edges stretched more than this (and long) are split anywhere
 constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
