@@ -12,6 +12,7 @@
 #include "sdf.h"
 #include "surgery.h"
 #include "surgery_plan.h"
+#include "threads.h"
 #include "topology.h"
 #include "tracker.h"
 #include "transfer.h"
@@ -22,8 +23,6 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/append.h>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -47,18 +46,6 @@ long PeakMemoryKiB() {
     if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
   return 0;
 }
-
-// Sets OpenMP's thread count for the lifetime of the object, and restores it.
-class ThreadScope {
- public:
-  explicit ThreadScope(int threads) : saved_(omp_get_max_threads()) {
-    if (threads > 0) omp_set_num_threads(threads);
-  }
-  ~ThreadScope() { omp_set_num_threads(saved_); }
-
- private:
-  int saved_;
-};
 
 void CopyMesh(Mesh &to, const Mesh &from) {
   // vcglib 2020.09's Append takes the mesh it reads as non-const; it only reads it.
@@ -238,7 +225,7 @@ Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels
   Fields s;
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
   // fields are made side by side.
-#pragma omp parallel sections
+#pragma omp parallel sections num_threads(Threads())
   {
 #pragma omp section
     s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr);
@@ -513,7 +500,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   for (std::size_t n = 0; n < samples.size(); ++n)
     if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
       throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
-  const ThreadScope threads(options.threads);
+  const ThreadCount threads(options.threads);
   const Stage stage = [&](double share, const std::string &name) {
     if (progress && !progress(share, name)) throw Error("cancelled");
   };
@@ -522,7 +509,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.steps = options.steps;
   rep.alpha = options.alpha;
   rep.anchors = int(anchors.size());
-  rep.threads = omp_get_max_threads();
+  rep.threads = Threads();
   rep.solver = options.solver == VelocitySolver::Method::Multigrid           ? "multigrid-preconditioned conjugate gradients"
                : options.solver == VelocitySolver::Method::ConjugateGradient ? "block-Jacobi-preconditioned conjugate gradients"
                                                                              : "Gauss-Seidel (red-black)";

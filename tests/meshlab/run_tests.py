@@ -15,7 +15,7 @@ What it checks, through Debian's meshlab / meshlabserver under Xvfb:
     the report in the log, the input layers unchanged after the filter and the input
     files unchanged (checksums);
   - samples/map_meshes.sh writes cut.ply, mapped.ply and report.txt;
-  - samples/render.sh draws a real cut layer with the checker texture it pulled (measured
+  - docs/tools/render.sh draws a real cut layer with the checker texture it pulled (measured
     in the PNG: three drawings, the checker's colours on the textured ones only);
   - every bad input fails the filter with its message, without a crash;
   - the GUI: meshlab loads the plugin, and (with xdotool) the filter is run from
@@ -44,6 +44,7 @@ OUT = os.path.join(ROOT, "out", "meshlab")
 SHOTS = os.path.join(ROOT, "out", "screenshots")
 PLUGIN = "/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_eulermap.so"
 BUILT = os.path.join(ROOT, "build", "filter_eulermap", "libfilter_eulermap.so")
+BENCH = os.path.join(ROOT, "build", "tests", "bench", "eulermap_bench")
 FILTER = "Eulerian Surface Map"
 FAILED_PREFIX = FILTER + " failed: "
 CRASH_CODES = {134, 136, 139, -6, -8, -11}  # abort, FPE, segfault (as exit codes or signals)
@@ -82,38 +83,18 @@ def sample_checksums():
     return {p: sha256(p) for p in sorted(glob.glob(os.path.join(SAMPLES, "*"))) if os.path.isfile(p)}
 
 
-def plugin_parameter_names():
-    """The parameter names, in order, from filter_eulermap/parameters.h."""
-    text = open(os.path.join(ROOT, "filter_eulermap", "parameters.h")).read()
-    return re.findall(r'inline const char \*const k\w+ = "(\w+)";', text)
-
-
 def mlx_text(**values):
-    """A complete script for the filter; `values` override the sample defaults."""
-    v = dict(source_mesh=0, target_mesh=1, grid_resolution=64, steps=40, alpha=2, hole_radius=1, align=1,
-             source_anchors="", target_anchors="", anchor_pairs="", fill_holes=False, transfer_texture=True,
-             transfer_color_quality=False)
-    v.update(values)
-    b = lambda x: "true" if x else "false"  # noqa: E731
-    return f"""<!DOCTYPE FilterScript>
-<FilterScript>
- <filter name="{FILTER}">
-  <Param type="RichMesh" name="source_mesh" value="{v['source_mesh']}"/>
-  <Param type="RichMesh" name="target_mesh" value="{v['target_mesh']}"/>
-  <Param type="RichInt" name="grid_resolution" value="{v['grid_resolution']}"/>
-  <Param type="RichInt" name="steps" value="{v['steps']}"/>
-  <Param type="RichFloat" name="alpha" value="{v['alpha']}"/>
-  <Param type="RichFloat" name="hole_radius" value="{v['hole_radius']}"/>
-  <Param type="RichEnum" name="align" value="{v['align']}" enum_cardinality="2" enum_val0="none" enum_val1="centre-and-scale"/>
-  <Param type="RichOpenFile" name="source_anchors" value="{v['source_anchors']}" exts_cardinality="1" exts_val0="*.pp"/>
-  <Param type="RichOpenFile" name="target_anchors" value="{v['target_anchors']}" exts_cardinality="1" exts_val0="*.pp"/>
-  <Param type="RichString" name="anchor_pairs" value="{v['anchor_pairs']}"/>
-  <Param type="RichBool" name="fill_holes" value="{b(v['fill_holes'])}"/>
-  <Param type="RichBool" name="transfer_texture" value="{b(v['transfer_texture'])}"/>
-  <Param type="RichBool" name="transfer_color_quality" value="{b(v['transfer_color_quality'])}"/>
- </filter>
-</FilterScript>
-"""
+    """A complete script for the filter, from the core's parameter table (core/parameters.h,
+    through `eulermap_bench mlx`); `values` override the defaults (source_mesh 0, target_mesh 1)."""
+    text = lambda x: ("true" if x else "false") if isinstance(x, bool) else str(x)  # noqa: E731
+    p = subprocess.run([BENCH, "mlx"] + [f"{k}={text(v)}" for k, v in values.items()],
+                       capture_output=True, text=True, check=True)
+    return p.stdout
+
+
+def plugin_parameter_names():
+    """The filter's parameter names, in order, from the core's table."""
+    return re.findall(r'<Param [^>]*name="(\w+)"', mlx_text())
 
 
 def meshlabserver(outdir, inputs, script, saves=(), timeout=1800):
@@ -160,23 +141,25 @@ def test_meshlabserver_lists_filter():
     check("An Eulerian approach for constructing a map between surfaces" in body, "description does not cite the paper")
     rows = re.findall(r"<TR><TD> \\c (\w+)\s*</TD> <TD> (.*?) </TD> <TD><i> (.*?) -- </i></TD> </TR>", body)
     names = plugin_parameter_names()
-    check(len(rows) == len(names), f"{len(rows)} parameters listed, {len(names)} declared in parameters.h")
+    check(len(rows) == len(names), f"{len(rows)} parameters listed, {len(names)} in core/parameters.h")
     for kind, label, help_text in rows:
         check(len(help_text) > 40, f"parameter '{label}' has no real help text: '{help_text}'")
 
 
 def test_sample_scripts_complete():
+    """Each sample script's <filter> element is the one the parameter table makes with the
+    script's own values: every parameter, in order, with its type and attributes."""
     names = plugin_parameter_names()
     check(len(names) == 13, f"expected the 12 parameters of issue 4 (with source_mesh) and issue 6's "
                             f"transfer_color_quality, found {names}")
     scripts = sorted(glob.glob(os.path.join(SAMPLES, "*.mlx")))
     check(len(scripts) >= 4, f"expected the 4 sample scripts, found {scripts}")
+    element = lambda text: re.search(r"<filter .*?</filter>", text, re.S).group(0)  # noqa: E731
     for s in scripts:
-        given = re.findall(r'<Param [^>]*name="(\w+)"', open(s).read())
-        check(given == names, f"{os.path.basename(s)} gives {given}, the filter declares {names} (all, in order)")
-        for p in re.findall(r"<Param [^>]*>", open(s).read()):
-            if 'type="RichAbsPerc"' in p:
-                check("min=" in p and "max=" in p, f"{os.path.basename(s)}: RichAbsPerc without min/max")
+        text = open(s).read()
+        values = dict(re.findall(r'<Param [^>]*name="(\w+)" value="([^"]*)"', text))
+        check(element(text) == element(mlx_text(**values)),
+              f"{os.path.basename(s)} is not what `eulermap_bench mlx` writes for its values: regenerate it")
 
 
 def make_sample_test(name, source, target, expect):
@@ -318,7 +301,7 @@ def read_png(path):
 
 
 def test_render_script():
-    """samples/render.sh draws a real output with MeshLab: sphere -> torus (small grid),
+    """docs/tools/render.sh draws a real output with MeshLab: sphere -> torus (small grid),
     then sphere | cut sphere with the torus's checker pulled | mapped layer, 1200x300.
     Measured in the PNG: its size, three separate drawings left to right, the plain
     sphere and the mapped layer (the forward method: the sphere's own texture, none)
@@ -332,7 +315,7 @@ def test_render_script():
     check("TextureFile torus_checker.png" in meshes.read_mesh(cut).comments, "the cut layer does not name torus_checker.png")
     check(sha256(os.path.join(outdir, "torus_checker.png")) == sha256(os.path.join(SAMPLES, "torus_checker.png")),
           "map_meshes.sh did not copy the texture the cut layer names beside it")
-    render = os.path.join(SAMPLES, "render.sh")
+    render = os.path.join(ROOT, "docs", "tools", "render.sh")
     t0 = time.time()
     p = subprocess.run([render, picture, "--size", "1200x300", "--textures", SAMPLES, os.path.join(SAMPLES, "sphere.ply"),
                         cut, mapped], capture_output=True, text=True, timeout=300)
