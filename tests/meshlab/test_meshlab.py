@@ -1,4 +1,4 @@
-"""MeshLab 2020.09 integration tests of the Eulerian Surface Map plugin (issue 4).
+"""MeshLab 2020.09 integration tests of the Eulerian Surface Map plugin.
 
 Run with tests/meshlab/run [-k SUBSTRING] (pytest), after building and installing the
 plugin (as root): cmake --build build && cmake --install build
