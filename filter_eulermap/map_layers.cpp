@@ -24,13 +24,13 @@ bool CheckLayerChoice(const Request &request, const std::vector<int> &layers, QS
     error = "no target mesh: load the surface to map onto as another layer and choose it as target_mesh";
     return false;
   }
-  QStringList names;
-  for (int n : layers) names << QString::number(n);
-  for (const auto &[parameter, layer] : {std::pair(parameter::kSourceMesh, request.sourceLayer),
-                                         std::pair(parameter::kTargetMesh, request.targetLayer)}) {
+  QStringList numbers;
+  for (int n : layers) numbers << QString::number(n);
+  for (const auto &[name, layer] : {std::pair(parameter::kSourceMesh, request.sourceLayer),
+                                    std::pair(parameter::kTargetMesh, request.targetLayer)}) {
     if (std::find(layers.begin(), layers.end(), layer) == layers.end()) {
       error = QString("%1: layer %2 does not exist (the document has layers %3)")
-                  .arg(parameter).arg(layer).arg(names.join(", "));
+                  .arg(name).arg(layer).arg(numbers.join(", "));
       return false;
     }
   }
