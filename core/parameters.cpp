@@ -1,5 +1,6 @@
 #include "parameters.h"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -213,22 +214,33 @@ std::string MlxFilter(const std::map<std::string, std::string> &values) {
   return o.str();
 }
 
+namespace {
+// The first sentence of a help text: up to a full stop before a capital letter.
+std::string FirstSentence(const std::string &help) {
+  for (std::size_t n = 0; n + 2 < help.size(); ++n)
+    if (help[n] == '.' && help[n + 1] == ' ' && std::isupper(static_cast<unsigned char>(help[n + 2])))
+      return help.substr(0, n + 1);
+  return help;
+}
+} // namespace
+
 std::string ParametersMarkdown() {
   std::ostringstream o;
   for (const Parameter &p : Parameters()) {
     if (!p.inFilter) continue;
-    o << "- `" << p.name << "` (" << p.label;
-    if (p.kind == K::Enum)
-      o << ": " << [&] {
-        std::string all;
-        for (const std::string &c : p.choices) all += (all.empty() ? "" : " / ") + c;
-        return all;
-      }() << "; default " << p.choices[std::size_t(p.Default())];
-    else if (p.get)
-      o << "; default " << ValueText(p, p.Default());
-    if (p.kind == K::Int || p.kind == K::Float)
-      o << "; " << (p.lowIncluded ? "" : "above ") << Number(p.low) << (p.lowIncluded ? "-" : " up to ") << Number(p.high);
-    o << ")\n";
+    o << "- `" << p.name << "`";
+    std::string facts;
+    if (p.kind == K::Enum) {
+      for (const std::string &c : p.choices) facts += (facts.empty() ? "" : " / ") + c;
+      facts += ", default " + p.choices[std::size_t(p.Default())];
+    } else if (p.kind == K::Int || p.kind == K::Float) {
+      facts = (p.lowIncluded ? "" : "above ") + Number(p.low) + (p.lowIncluded ? "-" : " up to ") + Number(p.high) +
+              ", default " + ValueText(p, p.Default());
+    } else if (p.get) {
+      facts = "default " + ValueText(p, p.Default());
+    }
+    if (!facts.empty()) o << " (" << facts << ")";
+    o << ": " << FirstSentence(p.help) << "\n";
   }
   return o.str();
 }

@@ -61,7 +61,8 @@ inline constexpr const char *kFilterName = "Eulerian Surface Map";
 // (meshlabserver 2020.09 asserts otherwise), defaults unless `values` (name -> text) gives one.
 std::string MlxFilter(const std::map<std::string, std::string> &values);
 
-// The README's parameter list: "`name` (default, limits): label" per parameter.
+// The README's parameter list: "- `name` (limits, default): the help's first sentence" per
+// parameter of the filter.
 std::string ParametersMarkdown();
 
 } // namespace eulermap
