@@ -7,6 +7,8 @@
 // (test_end_to_end).
 #pragma once
 
+#include "threads.h"
+
 #include <algorithm>
 #include <numeric>
 #include <vector>
@@ -20,7 +22,7 @@ template <class Block> double BlockSum(long n, Block &&block) {
   constexpr long kBlock = 4096;
   const long blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial(blocks);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long k = 0; k < blocks; ++k) partial[k] = block(k * kBlock, std::min(n, (k + 1) * kBlock));
   return std::accumulate(partial.begin(), partial.end(), 0.0);
 }

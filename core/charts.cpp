@@ -1,6 +1,6 @@
 #include "charts.h"
 
-#include <algorithm>
+#include "edge_faces.h"
 
 namespace eulermap {
 
@@ -19,24 +19,7 @@ vcg::TexCoord2d CornerTexCoord(const Face &f, int c, TexCoordKind kind) {
 }
 
 TexCoordSeams FindSeams(const Mesh &m, TexCoordKind kind) {
-  const int faces = int(m.face.size());
-  // Every face edge, keyed by its two vertices (smaller index first); equal keys are the
-  // faces that share the edge.
-  struct HalfEdge {
-    int lo, hi, face, edge;
-  };
-  std::vector<HalfEdge> edges;
-  edges.reserve(3 * std::size_t(faces));
-  for (int f = 0; f < faces; ++f) {
-    if (m.face[f].IsD()) continue;
-    for (int e = 0; e < 3; ++e) {
-      const int a = int(vcg::tri::Index(m, m.face[f].cV(e))), b = int(vcg::tri::Index(m, m.face[f].cV((e + 1) % 3)));
-      edges.push_back({std::min(a, b), std::max(a, b), f, e});
-    }
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const HalfEdge &x, const HalfEdge &y) { return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi; });
-
+  const EdgeFaces edgeFaces(m);
   // The coordinate a face has at one of its vertices, with the texture index.
   auto at = [&](int f, int vertex) {
     const Face &face = m.face[f];
@@ -44,27 +27,28 @@ TexCoordSeams FindSeams(const Mesh &m, TexCoordKind kind) {
       if (int(vcg::tri::Index(m, face.cV(c))) == vertex) return CornerTexCoord(face, c, kind);
     return vcg::TexCoord2d();
   };
-  auto continuous = [&](const HalfEdge &x, const HalfEdge &y) {
-    for (int v : {x.lo, x.hi}) {
-      const vcg::TexCoord2d s = at(x.face, v), t = at(y.face, v);
+  auto continuous = [&](int f, int g, int a, int b) {
+    for (int v : {a, b}) {
+      const vcg::TexCoord2d s = at(f, v), t = at(g, v);
       if (s.P() != t.P() || s.N() != t.N()) return false;
     }
     return true;
   };
 
+  // Each face continues across an edge into the first other face around it (two on a
+  // manifold edge) whose coordinates agree.
   TexCoordSeams seams;
-  seams.across.assign(faces, {-1, -1, -1});
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    // The faces around one edge (two on a manifold edge): each continues into the first
-    // other one whose coordinates agree.
-    for (std::size_t a = i; a < j; ++a)
-      for (std::size_t b = i; b < j; ++b) {
-        int &across = seams.across[edges[a].face][edges[a].edge];
-        if (a != b && across < 0 && continuous(edges[a], edges[b])) across = edges[b].face;
-      }
-    i = j;
+  seams.across.assign(m.face.size(), {-1, -1, -1});
+  for (int f = 0; f < int(m.face.size()); ++f) {
+    if (m.face[f].IsD()) continue;
+    for (int e = 0; e < 3; ++e) {
+      const int a = int(vcg::tri::Index(m, m.face[f].cV(e))), b = int(vcg::tri::Index(m, m.face[f].cV((e + 1) % 3)));
+      for (int g : edgeFaces.Around(a, b))
+        if (g != f && continuous(f, g, a, b)) {
+          seams.across[f][e] = g;
+          break;
+        }
+    }
   }
   return seams;
 }

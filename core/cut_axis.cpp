@@ -1,5 +1,7 @@
 #include "cut_axis.h"
 
+#include "eigen_point.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -60,7 +62,7 @@ CutDirection CutAxis(const TopologyEvent &event, const ScalarField &f, const std
   // (l1 >= 0) makes l0's the odd one, two negative make l2's.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(NodeHessian(f, event.node));
   const Eigen::Vector3d v = eigen.eigenvectors().col(eigen.eigenvalues()(1) >= 0 ? 0 : 2);
-  return {Point3(v(0), v(1), v(2)).Normalize(), false};
+  return {ToPoint(v).Normalize(), false};
 }
 
 } // namespace eulermap

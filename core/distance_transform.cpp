@@ -1,5 +1,7 @@
 #include "distance_transform.h"
 
+#include "threads.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,8 +18,8 @@ struct Triangle {
 // p minus its nearest point on triangle t: the nearest point by the Voronoi regions of the
 // triangle's corners, edges and face (barycentric tests on the projections of p). Not
 // vcglib's: vcg::TrianglePointDistance (exact, but a normalised plane, a projection and
-// three segment distances per call) made this SDF 2.8x slower (sphere, 96^3, one thread:
-// 0.78 -> 2.22 s); face::PointDistanceBase needs face normals and its
+// three segment distances per call) made this SDF about three times slower (docs/NOTES.md);
+// face::PointDistanceBase needs face normals and its
 // 1e-6 tolerances put it off by up to 1e-3 cells (test_sdf).
 Point3 Offset(const Triangle &t, const Point3 &p) {
   const Point3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
@@ -89,7 +91,7 @@ ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gr
         }
   };
   for (int phase = 0; phase < 4; ++phase) {
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(Threads())
     for (int s = phase; s < dims.Z(); s += 4)
       for (int t : bySlab[s]) seed(t);
   }
@@ -116,10 +118,10 @@ ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gr
           }
         }
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(count); ++n) out.values[n] = std::sqrt(d2[n]);
   if (gradient) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
     for (long n = 0; n < long(count); ++n) {
       const long i = n % dims.X(), j = n / dims.X() % dims.Y(), k = n / (long(dims.X()) * dims.Y());
       const Triangle &t = tris[nearest[n]];

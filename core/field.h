@@ -43,8 +43,8 @@ template <class Value> struct Field {
 
   // The trilinear interpolant of cell `cell` at local coordinates w: the corners weighted
   // by products of (1 - w_a) and w_a, summed axis by axis. No Value is default-constructed:
-  // vcg::Point3() leaves its coordinates unset (a garbage start here once made the tracker
-  // lose points inside MeshLab; test_field).
+  // vcg::Point3() leaves its coordinates unset, and inside MeshLab a garbage start makes
+  // the tracker lose points (test_field).
   Value Interpolate(const int cell[3], const double w[3]) const {
     const std::size_t sy = grid.dims.X(), sz = sy * grid.dims.Y();
     const Value *v = &values[grid.Index(cell[0], cell[1], cell[2])];
@@ -63,7 +63,8 @@ struct ScalarField : Field<double> {
   double Value(const Point3 &p) const;
   // Gradient of the trilinear interpolant at p (world units), the box-extension's outside.
   Point3 Gradient(const Point3 &p) const;
-  // Central-difference gradient at node (i,j,k) (one-sided at the box faces), world units.
+  // Central-difference gradient at node (i,j,k) (one-sided at the box faces), world units:
+  // the g of the velocity system (velocity.h).
   Point3 NodeGradient(int i, int j, int k) const;
 };
 

@@ -1,12 +1,13 @@
 #include "input.h"
 
+#include "edge_faces.h"
+#include "union_find.h"
+
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 
 #include <algorithm>
-#include <map>
 #include <cmath>
-#include <numeric>
 #include <tuple>
 
 namespace eulermap {
@@ -59,21 +60,15 @@ int Weld(Mesh &mesh) {
 
 // Connected parts of the live faces (faces sharing a vertex): per face index, its part.
 std::vector<int> FaceParts(const Mesh &mesh, int &parts) {
-  std::vector<int> parent(mesh.vert.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  UnionFind vertices(int(mesh.vert.size()));
   for (const Face &f : mesh.face)
     if (!f.IsD())
-      for (int c = 1; c < 3; ++c)
-        parent[find(int(vcg::tri::Index(mesh, f.cV(c))))] = find(int(vcg::tri::Index(mesh, f.cV(0))));
+      for (int c = 1; c < 3; ++c) vertices.Merge(int(vcg::tri::Index(mesh, f.cV(c))), int(vcg::tri::Index(mesh, f.cV(0))));
   std::vector<int> label(mesh.vert.size(), -1), part(mesh.face.size(), -1);
   parts = 0;
   for (std::size_t n = 0; n < mesh.face.size(); ++n) {
     if (mesh.face[n].IsD()) continue;
-    const int root = find(int(vcg::tri::Index(mesh, mesh.face[n].cV(0))));
+    const int root = vertices.Find(int(vcg::tri::Index(mesh, mesh.face[n].cV(0))));
     if (label[root] < 0) label[root] = parts++;
     part[n] = label[root];
   }
@@ -86,22 +81,13 @@ std::vector<int> FaceParts(const Mesh &mesh, int &parts) {
 // with their neighbours make the winding number cancel (every other face turned over reads
 // as no inside at all).
 int OrientCoherently(Mesh &mesh) {
-  std::map<std::pair<const Vertex *, const Vertex *>, std::vector<int>> edgeFaces;  // undirected edge -> faces
-  auto edge = [](const Face &f, int e) {
-    const Vertex *a = f.cV(e), *b = f.cV((e + 1) % 3);
-    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
-  };
-  for (std::size_t n = 0; n < mesh.face.size(); ++n)
-    if (!mesh.face[n].IsD())
-      for (int e = 0; e < 3; ++e) edgeFaces[edge(mesh.face[n], e)].push_back(int(n));
-  // Whether faces f and g use their shared edge in the same direction (then they disagree).
-  auto sameDirection = [&](const Face &f, const Face &g, const std::pair<const Vertex *, const Vertex *> &ab) {
-    auto from = [&](const Face &h) {
-      for (int e = 0; e < 3; ++e)
-        if (edge(h, e) == ab) return static_cast<const Vertex *>(h.cV(e));
-      return static_cast<const Vertex *>(nullptr);
-    };
-    return from(f) == from(g);
+  const EdgeFaces edgeFaces(mesh);
+  auto index = [&](const Face &f, int c) { return int(vcg::tri::Index(mesh, f.cV(c))); };
+  // Whether face g runs along a -> b, as the face it is reached from does (then they disagree).
+  auto runsAlong = [&](const Face &g, int a, int b) {
+    for (int e = 0; e < 3; ++e)
+      if (index(g, e) == a && index(g, (e + 1) % 3) == b) return true;
+    return false;
   };
   std::vector<char> seen(mesh.face.size(), 0);
   int turned = 0;
@@ -112,13 +98,13 @@ int OrientCoherently(Mesh &mesh) {
     for (std::size_t q = 0; q < queue.size(); ++q) {
       Face &f = mesh.face[queue[q]];
       for (int e = 0; e < 3; ++e) {
-        const auto ab = edge(f, e);
-        const std::vector<int> &faces = edgeFaces[ab];
+        const int a = index(f, e), b = index(f, (e + 1) % 3);
+        const std::vector<int> &faces = edgeFaces.Around(a, b);
         if (faces.size() != 2) continue;
         const int g = faces[0] == queue[q] ? faces[1] : faces[0];
         if (seen[g]) continue;
         seen[g] = 1;
-        if (sameDirection(f, mesh.face[g], ab)) {
+        if (runsAlong(mesh.face[g], a, b)) {
           std::swap(mesh.face[g].V(1), mesh.face[g].V(2));
           std::swap(mesh.face[g].WT(1), mesh.face[g].WT(2));
           ++turned;

@@ -1,7 +1,7 @@
 // eulermap::Mesh — the core's triangle mesh, a vcglib TriMesh in double precision.
 //
-// The MeshLab adapter copies layers into and out of this type
-// (vcg::tri::Append works across mesh types), so the core never sees CMeshO.
+// The MeshLab adapter copies layers into and out of this type (filter_eulermap/
+// mesh_convert.h, CopyMesh), so the core never sees CMeshO.
 // Components: positions, normals, flags, quality (per-vertex distortion), colour,
 // per-vertex and per-wedge texture coordinates (targets may carry either),
 // FF/VF adjacency for topology and cleaning, and Mark for spatial queries.

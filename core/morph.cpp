@@ -9,7 +9,10 @@
 // q_i(t) -> b_i. Otherwise both warps are the identity (a plain linear blend).
 #include "morph.h"
 
+#include "eigen_point.h"
 #include "grow_shrink.h"
+#include "threads.h"
+#include "union_find.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -22,7 +25,6 @@
 #include <cstdint>
 #include <limits>
 #include <mutex>
-#include <numeric>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -34,9 +36,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
-
-Vec3 ToEigen(const Point3 &p) { return Vec3(p.X(), p.Y(), p.Z()); }
-Point3 ToPoint(const Vec3 &v) { return Point3(v.x(), v.y(), v.z()); }
 
 // Tuning constants (see Describe() and the report of the morph).
 constexpr double kCoplanarSource = 1e-2;  // a: smallest / largest singular value of the centred anchors
@@ -73,14 +72,6 @@ double TetQuality(const std::array<Vec3, 4> &p) {
 // Binomial coefficient C(n, 4) in floating point (no overflow for any anchor count).
 double Choose4(std::size_t n) { return n < 4 ? 0 : double(n) * (n - 1) * (n - 2) * (n - 3) / 24; }
 
-// Union-find over anchor indices, to check the tetrahedra connect all anchors.
-struct Components {
-  std::vector<int> parent;
-  explicit Components(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int Find(int i) { return parent[i] == i ? i : parent[i] = Find(parent[i]); }
-  void Join(int i, int j) { parent[Find(i)] = Find(j); }
-};
-
 } // namespace
 
 // The two thin-plate warps of one time t. Both interpolate through the same nodes
@@ -98,8 +89,8 @@ struct WarpPair {
   // of grid nodes), vectorised over the points: per node q_i the distances
   // r_m = |y_m - q_i| = sqrt((y_m.x - q_i.x)^2 + c_i), c_i the part of the squared
   // distance that is the same along the row, then each warp coordinate W(y_m) = affine
-  // part + sum_i phi(r_m) w_i, phi(r) = r, as whole rows (Table 1 row 1, one thread: the
-  // warps 11.7 -> 5.3 G instructions against a point at a time).
+  // part + sum_i phi(r_m) w_i, phi(r) = r, as whole rows (less than half the instructions
+  // of a point at a time: docs/NOTES.md).
   //   want:      which to evaluate, [W_t->0, W_t->1]; one not wanted is not written
   //   toSource:  out, W_t->0(p_m) for m < count, when want[0]
   //   toTarget:  out, W_t->1(p_m), when want[1]
@@ -348,9 +339,9 @@ bool Morph::Impl::BuildTetrahedra() {
     ++rescued;
     for (int c : best) ++count[c];
   }
-  Components components(n);
+  UnionFind components(n);  // anchors joined by the chosen tetrahedra
   for (const auto &v : chosen)
-    for (int c = 1; c < 4; ++c) components.Join(v[0], v[c]);
+    for (int c = 1; c < 4; ++c) components.Merge(v[0], v[c]);
   for (int i = 1; i < n; ++i)
     if (components.Find(i) != components.Find(0)) {
       reason = std::to_string(n) + " anchors, tetrahedra fall apart into separate groups";
@@ -544,7 +535,7 @@ void Morph::Frame(double t, ScalarField &out) const {
 
   if (impl_->mode == Mode::GrowShrink) return impl_->growShrink->Frame(t, out);
   if (impl_->mode == Mode::LinearBlend) {  // W = identity
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
     for (long long i = 0; i < count; ++i) {
       double v = 0;
       if (t != 1) v += (1 - t) * f0.values[i];
@@ -560,7 +551,7 @@ void Morph::Frame(double t, ScalarField &out) const {
   const bool want[2] = {use0 && !w.identity[0], use1 && !w.identity[1]};
   const int nx = g.dims.X();
   const long long rows = (long long)g.dims.Y() * g.dims.Z();
-#pragma omp parallel
+#pragma omp parallel num_threads(Threads())
   {
     std::vector<Point3> p0(nx), p1(nx);
     std::vector<double> scratch;
@@ -627,7 +618,7 @@ void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, 
   const int nx = g.dims.X();
   const long long rows = (long long)g.dims.Y() * g.dims.Z();
   const bool want[2] = {true, false};  // W: q(t0) -> q(t1)
-#pragma omp parallel
+#pragma omp parallel num_threads(Threads())
   {
     std::vector<Point3> moved(nx);
     std::vector<double> scratch, x(nx), nearest2(nx);

@@ -1,6 +1,7 @@
 #include "multigrid.h"
 
 #include "block_sum.h"
+#include "threads.h"
 
 #include <algorithm>
 
@@ -32,7 +33,7 @@ void FullWeighting(const RedBlackLayout &fine, const RedBlackArrays<N> &from, co
         weight[taps++] = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
       }
   const int nc = coarse.dims[0];
-#pragma omp parallel if (fine.Nodes() >= kParallelNodes)
+#pragma omp parallel if (fine.Nodes() >= kParallelNodes) num_threads(Threads())
   {
     std::vector<float> row(nc);
 #pragma omp for schedule(static)
@@ -126,7 +127,7 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
     }
   });
   const int nc = cd[0];
-#pragma omp parallel if (fine.layout.Nodes() >= kParallelNodes)
+#pragma omp parallel if (fine.layout.Nodes() >= kParallelNodes) num_threads(Threads())
   {
     std::vector<float> sum(nc);
 #pragma omp for schedule(static)
@@ -219,7 +220,7 @@ void BlockMultigrid::Cycle(std::size_t n) {
 double BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.layout.Positions());
-#pragma omp parallel
+#pragma omp parallel num_threads(Threads())
   for (int e = 0; e < 6; ++e) {  // b = r, component e % 3 of colour e / 3
     const double *from = r.c[e / 3][e % 3].data();
     float *to = fine.b.c[e / 3][e % 3].data();

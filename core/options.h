@@ -1,5 +1,6 @@
-// eulermap::Options — what the user can set, with the one place their limits live
-// (Options::Validate), and the types every host hands to the pipeline: AnchorPair, Error.
+// eulermap::Options — what the user can set, checked by Options::Validate against the
+// limits of the parameter table (parameters.h), and the types every host hands to the
+// pipeline: AnchorPair, Error.
 #pragma once
 
 #include "mesh.h"
@@ -40,17 +41,6 @@ struct Options {
   bool transferColour = false;   // the target's vertex colours onto the cut
   bool transferQuality = false;  // the target's vertex quality onto the cut, instead of the distortion
   int threads = 0;           // 0: all cores
-
-  // Limits. Every run costs (grid nodes) x (steps) velocity solves; the memory a grid needs
-  // is checked against what the process may have (memory.h), these bound the rest.
-  static constexpr int kMinGrid = 8, kMaxGrid = 4096;
-  static constexpr int kMaxSteps = 1000;           // 40 suits most meshes; more only slows
-  static constexpr double kMaxAlpha = 1e6;
-  static constexpr double kMaxHoleRadius = 16;     // cells: a larger sphere cuts whole parts away
-  static constexpr double kMaxAnchorWeight = 1e6;
-  static constexpr double kMaxAnchorRadius = 64;   // cells
-  static constexpr int kMaxIterationsLimit = 100000;
-  static constexpr int kMaxThreads = 1024;
 
   // Throws Error naming the parameter (as the hosts call it), its value and the range to give.
   void Validate() const;

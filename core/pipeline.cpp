@@ -13,6 +13,7 @@
 #include "sdf.h"
 #include "surgery.h"
 #include "surgery_plan.h"
+#include "threads.h"
 #include "topology.h"
 #include "tracker.h"
 #include "transfer.h"
@@ -23,8 +24,6 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/append.h>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -49,19 +48,11 @@ long PeakMemoryKiB() {
   return 0;
 }
 
-// Sets OpenMP's thread count for the lifetime of the object, and restores it.
-class ThreadScope {
- public:
-  explicit ThreadScope(int threads) : saved_(omp_get_max_threads()) {
-    if (threads > 0) omp_set_num_threads(threads);
-  }
-  ~ThreadScope() { omp_set_num_threads(saved_); }
-
- private:
-  int saved_;
-};
-
 void CopyMesh(Mesh &to, const Mesh &from) {
+  // to = from: MeshCopy clears `to` but appends the texture names to those it has (vcglib's
+  // Clear leaves them), so a second copy into the mapped source would name each twice.
+  to.textures.clear();
+  to.normalmaps.clear();
   // vcglib 2020.09's Append takes the mesh it reads as non-const; it only reads it.
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(to, const_cast<Mesh &>(from), false, false);
   vcg::tri::UpdateBounding<Mesh>::Box(to);
@@ -240,7 +231,7 @@ Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels
   Fields s;
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
   // fields are made side by side.
-#pragma omp parallel sections
+#pragma omp parallel sections num_threads(Threads())
   {
 #pragma omp section
     s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr);
@@ -437,7 +428,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   rep.pointsAdded = surgery.PointsAdded();
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
   std::vector<ClosestHit> hits(images.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(images.size()); ++n) hits[n] = placedIndex.Query(images[n]);
   const std::size_t vertices = m.source.vert.size();
   for (std::size_t n = 0; n < m.a.size(); ++n) {
@@ -491,7 +482,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   // The inverse method (transfer.h): the cut reads the target at the final images.
   stage(0.96, "pulling the target's attributes");
   std::vector<ClosestHit> onTarget(mapped.vert.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(mapped.vert.size()); ++n) onTarget[n] = targetIndex.Query(mapped.vert[n].cP());
   if (options.transferTexture) {
     const TexCoordPull pull = PullTexCoords(cut, m.target, onTarget);
@@ -531,7 +522,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   for (std::size_t n = 0; n < samples.size(); ++n)
     if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
       throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
-  const ThreadScope threads(options.threads);
+  const ThreadCount threads(options.threads);
   const Stage stage = [&](double share, const std::string &name) {
     if (progress && !progress(share, name)) throw Error("cancelled");
   };
@@ -540,7 +531,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.steps = options.steps;
   rep.alpha = options.alpha;
   rep.anchors = int(anchors.size());
-  rep.threads = omp_get_max_threads();
+  rep.threads = Threads();
   rep.solver = options.solver == VelocitySolver::Method::Multigrid           ? "multigrid-preconditioned conjugate gradients"
                : options.solver == VelocitySolver::Method::ConjugateGradient ? "block-Jacobi-preconditioned conjugate gradients"
                                                                              : "Gauss-Seidel (red-black)";

@@ -3,6 +3,8 @@
 // position; simpler closed forms for 0, 1, 2 and collinear anchors.
 #include "placement.h"
 
+#include "eigen_point.h"
+
 #include <vcg/complex/algorithms/update/bounding.h>
 
 #include <Eigen/Geometry>
@@ -15,9 +17,6 @@
 namespace eulermap {
 
 namespace {
-
-Eigen::Vector3d ToEigen(const Point3 &p) { return Eigen::Vector3d(p.X(), p.Y(), p.Z()); }
-Point3 ToPoint(const Eigen::Vector3d &v) { return Point3(v.x(), v.y(), v.z()); }
 
 // Points as the columns of a 3 x n matrix.
 Eigen::Matrix3Xd Columns(const std::vector<Point3> &pts) {

@@ -1,11 +1,13 @@
 #include "quality.h"
 
+#include "threads.h"
+#include "union_find.h"
+
 #include <vcg/complex/algorithms/point_sampling.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <unordered_map>
 
 namespace eulermap {
@@ -15,12 +17,7 @@ namespace {
 // Single-linkage groups of `points`: points closer than `link` share a group. A hash grid
 // of cells `link` wide finds the pairs (each point against the 27 cells around its own).
 std::vector<UncoveredPart> GroupPoints(const std::vector<Point3> &points, double link, std::size_t total) {
-  std::vector<int> parent(points.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  UnionFind groups(int(points.size()));
   auto key = [&](long x, long y, long z) { return (x * 73856093L) ^ (y * 19349663L) ^ (z * 83492791L); };
   auto cellOf = [&](const Point3 &p, int a) { return long(std::floor(p[a] / link)); };
   std::unordered_map<long, std::vector<int>> cells;
@@ -33,13 +30,13 @@ std::vector<UncoveredPart> GroupPoints(const std::vector<Point3> &points, double
           const auto it = cells.find(key(cellOf(points[i], 0) + dx, cellOf(points[i], 1) + dy, cellOf(points[i], 2) + dz));
           if (it == cells.end()) continue;
           for (int j : it->second)
-            if (j > i && vcg::SquaredDistance(points[i], points[j]) < link * link) parent[find(i)] = find(j);
+            if (j > i && vcg::SquaredDistance(points[i], points[j]) < link * link) groups.Merge(i, j);
         }
   std::unordered_map<int, int> index;  // root -> part
   std::vector<UncoveredPart> parts;
   std::vector<std::vector<int>> members;
   for (int i = 0; i < int(points.size()); ++i) {
-    const auto [it, added] = index.emplace(find(i), int(parts.size()));
+    const auto [it, added] = index.emplace(groups.Find(i), int(parts.size()));
     if (added) parts.push_back({Point3(0, 0, 0), 0, 0}), members.emplace_back();
     members[it->second].push_back(i);
   }
@@ -57,7 +54,7 @@ std::vector<UncoveredPart> GroupPoints(const std::vector<Point3> &points, double
 double OnSurfaceRate(const std::vector<Point3> &points, const ClosestPoint &surface, double tolerance) {
   if (points.empty()) return 1;
   long inside = 0;
-#pragma omp parallel for reduction(+ : inside) schedule(static)
+#pragma omp parallel for reduction(+ : inside) schedule(static) num_threads(Threads())
   for (long n = 0; n < long(points.size()); ++n) {
     const ClosestHit hit = surface.Query(points[n], 2 * tolerance);
     inside += hit.face != nullptr && hit.distance <= tolerance;
@@ -73,7 +70,7 @@ double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<Uncove
   if (points.empty()) return 1;
   const ClosestPoint index(mapped);
   std::vector<char> near(points.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(points.size()); ++n) {
     const ClosestHit hit = index.Query(points[n], 2 * tolerance);
     near[n] = hit.face != nullptr && hit.distance <= tolerance;
@@ -88,7 +85,7 @@ double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<Uncove
 double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target) {
   vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(mapped);
   double flipped = 0, total = 0;
-#pragma omp parallel for reduction(+ : flipped, total) schedule(static)
+#pragma omp parallel for reduction(+ : flipped, total) schedule(static) num_threads(Threads())
   for (long n = 0; n < long(mapped.face.size()); ++n) {
     const Face &f = mapped.face[n];
     if (f.IsD()) continue;

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "mesh.h"
+#include "threads.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -82,7 +83,7 @@ constexpr std::size_t kParallelNodes = 16384;
 // (from kParallelNodes nodes).
 template <class Fn> void ForEachRun(const RedBlackLayout &layout, int firstColour, int lastColour, Fn &&fn) {
   const vcg::Point3i &d = layout.dims;
-#pragma omp parallel for schedule(static) if (layout.Nodes() >= kParallelNodes)
+#pragma omp parallel for schedule(static) if (layout.Nodes() >= kParallelNodes) num_threads(Threads())
   for (int k = 0; k < d[2]; ++k)
     for (int j = 0; j < d[1]; ++j)
       for (int c = firstColour; c <= lastColour; ++c)

@@ -26,6 +26,77 @@ double MapQuality::ResolvedAnchorErrorCells() const {
   return worst;
 }
 
+const std::vector<Figure> &FigureTable() {
+  using U = FigureUnit;
+  using L = FigureLine;
+  static const std::vector<Figure> table = {
+      {"repairs", U::Count, L::None, "repairs", false, [](const Report &r) { return double(r.repairs.size()); }},
+      {"warnings", U::Count, L::None, "warnings", false, [](const Report &r) { return double(r.warnings.size()); }},
+      {"grid_cell_size", U::Number, L::None, "cell", false, [](const Report &r) { return r.cellSize; }},
+      {"steps", U::Count, L::None, "steps", false, [](const Report &r) { return double(r.steps); }},
+      {"source_vertices", U::Count, L::None, "source vertices", true, [](const Report &r) { return double(r.sourceVertices); }},
+      {"anchors", U::Count, L::None, "anchors", true, [](const Report &r) { return double(r.anchors); }},
+      {"topology_events", U::Count, L::None, "topology events", false, [](const Report &r) { return double(r.topologyEvents.size()); }},
+      {"holes", U::Count, L::None, "holes", false, [](const Report &r) { return double(r.HolesCut()); }},
+      {"cut_vertices", U::Count, L::None, "cut vertices", false, [](const Report &r) { return double(r.cutVertices); }},
+      {"cut_faces", U::Count, L::None, "cut faces", false, [](const Report &r) { return double(r.cutFaces); }},
+      {"cut_components", U::Count, L::None, "cut components", false, [](const Report &r) { return double(r.cutComponents); }},
+      {"cut_boundary_loops", U::Count, L::None, "cut boundary loops", false, [](const Report &r) { return double(r.cutBoundaryLoops); }},
+      {"cut_euler_characteristic", U::Count, L::None, "cut Euler characteristic", false,
+       [](const Report &r) { return double(r.cutEulerCharacteristic); }},
+      {"points_added", U::Count, L::None, "points added", false, [](const Report &r) { return double(r.pointsAdded); }},
+      {"stretched_split", U::Count, L::None, "points added where edges stretched", false,
+       [](const Report &r) { return double(r.stretchedSplit); }},
+      {"time_sdf_s", U::Seconds, L::Times, "SDF", true, [](const Report &r) { return r.times.sdf; }},
+      {"time_int_s", U::Seconds, L::Times, "INT", true, [](const Report &r) { return r.times.interp; }},
+      {"time_vf_s", U::Seconds, L::Times, "VF", true, [](const Report &r) { return r.times.velocity; }},
+      {"time_def_s", U::Seconds, L::Times, "DEF", true, [](const Report &r) { return r.times.deform; }},
+      {"time_total_s", U::Seconds, L::Times, "total", true, [](const Report &r) { return r.times.Total(); }},
+      {"time_quality_s", U::Seconds, L::Times, "quality measures", false, [](const Report &r) { return r.times.quality; }},
+      {"solver_iterations", U::Count, L::None, "solver iterations", true,
+       [](const Report &r) { return double(r.solverFigures.totalIterations); }},
+      {"solver_max_step_iterations", U::Count, L::None, "most in a step", true,
+       [](const Report &r) { return double(r.solverFigures.maxIterations); }},
+      {"peak_memory_mib", U::Number, L::None, "peak MiB", true, [](const Report &r) { return r.peakMemoryKiB / 1024.0; }},
+      {"on_surface_rate", U::Share, L::Quality, "on-surface", true, [](const Report &r) { return r.quality.onSurfaceRate; }},
+      {"coverage", U::Share, L::Quality, "coverage", true, [](const Report &r) { return r.quality.coverage; }},
+      {"flipped_area_share", U::Share, L::Quality, "flipped area", true, [](const Report &r) { return r.quality.flippedAreaShare; }},
+      {"flipped_before_untangling", U::Share, L::None, "flipped as tracked", false,
+       [](const Report &r) { return r.quality.flippedBeforeUntangling; }},
+      {"longest_edge_cells", U::Cells, L::Quality, "longest mapped edge", false, [](const Report &r) { return r.quality.longestEdgeCells; }},
+      {"longest_edge_share", U::Share, L::None, "longest mapped edge over the target diagonal", false,
+       [](const Report &r) { return r.quality.longestEdgeShare; }},
+      {"anchor_error_cells", U::Cells, L::Quality, "anchor error", true, [](const Report &r) { return r.quality.anchorErrorCells; }},
+      {"anchor_error_resolved_cells", U::Cells, L::None, "anchor error, resolved anchors", true,
+       [](const Report &r) { return r.quality.ResolvedAnchorErrorCells(); }},
+      {"mean_distortion", U::Number, L::Quality, "mean distortion", false, [](const Report &r) { return r.quality.meanDistortion; }},
+  };
+  return table;
+}
+
+std::string Figure::Text(const Report &report) const {
+  const double x = value(report);
+  switch (unit) {
+  case FigureUnit::Count: return Format("%.0f", x);
+  case FigureUnit::Share: return Format("%.2f%%", 100 * x);
+  case FigureUnit::Seconds: return Format("%.3f", x);
+  case FigureUnit::Cells: return Format("%.2f cells", x);
+  case FigureUnit::Number: return Format("%.3f", x);
+  }
+  return "";
+}
+
+namespace {
+// "map quality: on-surface 99.79%, coverage ...": the figures of one line.
+std::string FigureLineText(const char *title, FigureLine line, const Report &report) {
+  std::string text = title;
+  const char *separator = ": ";
+  for (const Figure &f : FigureTable())
+    if (f.line == line) text += separator + std::string(f.label) + " " + f.Text(report), separator = ", ";
+  return text + "\n";
+}
+} // namespace
+
 int Report::HolesCut() const {
   int n = 0;
   for (const EventSurgery &s : surgery) n += s.outcome == EventCut::Cut || s.outcome == EventCut::Collapsed;
@@ -98,12 +169,8 @@ std::string Report::ToText() const {
                 neededBoundaryLoops == 1 ? "" : "s", neededEulerCharacteristic, CutAsNeeded() ? "as built" : "NOT as built");
   else if (!cutNotChecked.empty())
     o << "the cut is not checked against a prediction: " << cutNotChecked << "\n";
-  o << Format("times (s): SDF %.3f, INT %.3f, VF %.3f, DEF %.3f, total %.3f (quality measures %.3f)\n", times.sdf,
-              times.interp, times.velocity, times.deform, times.Total(), times.quality);
-  o << Format("map quality: on-surface %.2f%%, coverage %.2f%%, flipped area %.2f%%, longest mapped edge %.2f cells, "
-              "anchor error %.2f cells, mean distortion %.3f\n",
-              100 * quality.onSurfaceRate, 100 * quality.coverage, 100 * quality.flippedAreaShare,
-              quality.longestEdgeCells, quality.anchorErrorCells, quality.meanDistortion);
+  o << FigureLineText("times (s)", FigureLine::Times, *this);
+  o << FigureLineText("map quality", FigureLine::Quality, *this);
   if (!quality.anchorFigures.empty()) {
     o << "anchors (error in cells; f0 at a, f1 at b in cells):";
     std::string far;  // anchors more than a cell off, at a tip the grid cuts short

@@ -1,6 +1,8 @@
 // eulermap::Report — every number users read (timings, solver figures, topology events and their cuts,
 // map quality) in one type, printed the same way by the MeshLab log, the tests and
-// the benchmark (DESIGN.md: style).
+// the benchmark (DESIGN.md: style). Its numbers are one table (FigureTable()): their names,
+// units and where they appear drive the log's quality and time lines, the figures
+// pymeshlab returns and the benchmark's row.
 #pragma once
 
 #include "mesh.h"
@@ -142,5 +144,32 @@ struct Report {
   // Multi-line text for the log, the tests and the benchmark.
   std::string ToText() const;
 };
+
+// One number of a Report, by name.
+enum class FigureUnit {
+  Count,    // an integer
+  Share,    // in [0, 1]; the log and the benchmark print it as a percentage
+  Seconds,
+  Cells,    // grid cells
+  Number,   // anything else
+};
+enum class FigureLine {
+  None,     // returned (pymeshlab) but not on a line of its own: the log says it in words
+  Times,    // "times (s): SDF 0.290, ..."
+  Quality,  // "map quality: on-surface 99.79%, ..."
+};
+struct Figure {
+  const char *name;   // snake_case: pymeshlab's key, the benchmark's column
+  FigureUnit unit;
+  FigureLine line;
+  const char *label;  // on its line of the log ("on-surface"); the benchmark's header
+  bool benchmark;     // a column of the benchmark's row
+  double (*value)(const Report &);
+  // "99.79%", "2.00 cells", "0.290": as the log and the benchmark print it.
+  std::string Text(const Report &report) const;
+};
+
+// Every figure, in the order of the benchmark's row and of each log line.
+const std::vector<Figure> &FigureTable();
 
 } // namespace eulermap

@@ -1,5 +1,8 @@
 #include "saddle.h"
 
+#include "eigen_point.h"
+#include "threads.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -69,7 +72,7 @@ Point3 StableDirection(const double J[3][3], int expanding) {
   }
   Eigen::Vector3d d = expanding == 2 || span.size() < 2 ? span.at(0) : span[0].cross(span[1]);
   d.normalize();
-  return Point3(d(0), d(1), d(2));
+  return ToPoint(d);
 }
 } // namespace
 
@@ -80,14 +83,14 @@ std::vector<Saddle> FindSaddles(const VectorField &V) {
   // V_a >= 0. A trilinear component lies between its corner values, so a cell can hold a
   // zero only when its corners' bits together are all six.
   std::vector<unsigned char> signs(V.values.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(signs.size()); ++n) {
     const Point3 &v = V.values[n];
     signs[n] = (v[0] <= 0) | (v[1] <= 0) << 1 | (v[2] <= 0) << 2 | (v[0] >= 0) << 3 | (v[1] >= 0) << 4 | (v[2] >= 0) << 5;
   }
   const std::size_t sy = d.X(), sz = sy * d.Y();
   std::vector<Saddle> found;
-#pragma omp parallel
+#pragma omp parallel num_threads(Threads())
   {
     std::vector<Saddle> mine;
 #pragma omp for schedule(dynamic, 1) nowait

@@ -34,6 +34,7 @@
 #include "sdf.h"
 
 #include "distance_transform.h"
+#include "threads.h"
 
 #include <vcg/space/distance3.h>
 
@@ -350,7 +351,7 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
     whole[n] = std::lround(w + coneWinding(p));
     inside[n] = winding.Inside(p, w);
   };
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
   for (long n = 0; n < long(count); ++n) {
     bool near = nearCone[n];
     forEachNeighbour(n, [&](long m) { near = near || d.values[n] + d.values[m] <= h; });
@@ -377,7 +378,7 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
     queue.push_back(seed);
   }
   // Elsewhere w_mesh = W - w_cone, its sign checked as an estimate's.
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
   for (long n = 0; n < long(count); ++n)
     if (!evaluated[n]) {
       const Point3 p = node(n);
@@ -395,7 +396,7 @@ ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *grad
   ScalarField f = UnsignedDistance(mesh, grid, gradient);
   const WindingNumber winding(mesh);
   const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(f.values.size()); ++n)
     if (inside[n]) {
       f.values[n] = -f.values[n];

@@ -1,4 +1,5 @@
 #include "tracker.h"
+#include "threads.h"
 
 #include <cmath>
 
@@ -49,7 +50,7 @@ std::size_t Tracker::Add(const std::vector<Point3> &points, double level) {
 }
 
 void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(points_.size()); ++n) {
     Point3 &p = points_[n];
     const Point3 mid = p + V.Sample(p) * (dt / 2);  // Eq. 7, midpoint rule
@@ -58,7 +59,7 @@ void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt)
 }
 
 void Tracker::Settle(const HermiteField &f1) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(points_.size()); ++n) points_[n] = PullBack(f1, points_[n], levels_[n]);
 }
 

@@ -1,5 +1,7 @@
 #include "transfer.h"
 
+#include "threads.h"
+
 #include <vcg/simplex/face/distance.h>
 
 #include <algorithm>
@@ -42,7 +44,7 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
   auto index = [&](const Face *f) { return int(f - &target.face[0]); };
 
   int across = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : across)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : across) num_threads(Threads())
   for (long n = 0; n < long(cut.face.size()); ++n) {
     Face &f = cut.face[n];
     if (f.IsD()) continue;

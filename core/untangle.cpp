@@ -1,5 +1,7 @@
 #include "untangle.h"
 
+#include "threads.h"
+
 #include <vcg/complex/algorithms/update/normal.h>
 
 namespace eulermap {
@@ -43,7 +45,7 @@ int Untangle(Mesh &mapped, const ClosestPoint &target, int rounds, int rings) {
       marked.swap(grown);
     }
     std::vector<Point3> next(n);
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(Threads())
     for (long v = 0; v < long(n); ++v) {
       next[v] = mapped.vert[v].cP();
       if (!marked[v] || neighbours[v].empty()) continue;

@@ -1,6 +1,7 @@
 #include "velocity.h"
 
 #include "block_sum.h"
+#include "threads.h"
 
 #include <algorithm>
 #include <array>
@@ -47,14 +48,10 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*)), shift = alpha n_i + beta_i;
   // the multigrid's D_i = g g^T + beta_i I; x = V.
   const vcg::Point3i d = grid_.dims;
-  const std::size_t sy = d.X(), sz = sy * d.Y();
-  const double whole = 0.5 / grid_.h, half = 0.25 / grid_.h;  // sum = 2 mean: over 2 and 1 cells
   const double *f0 = fk.values.data(), *f1 = fk1.values.data();
   const Point3 *v = V.values.data(), *motion = withPrior ? prior.values.data() : nullptr;
   const double *weight = withPrior ? priorWeight.values.data() : nullptr;
   ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
-    const std::size_t yLo = j > 0 ? sy : 0, yHi = j + 1 < d.Y() ? sy : 0, zLo = k > 0 ? sz : 0, zHi = k + 1 < d.Z() ? sz : 0;
-    const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
     const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
     double *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
     float *D[6] = {};
@@ -64,10 +61,10 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
       for (int e = 0; e < 6; ++e) D[e] = multigrid_->Data().c[c][e].data() + run.first;
     for (int t = 0; t < run.count; ++t) {
       const int i = run.firstI + 2 * t;
-      const std::size_t idx = row + i, xLo = i > 0, xHi = i + 1 < d.X();
-      auto sum = [&](std::size_t n) { return f0[n] + f1[n]; };
-      const double gx = (sum(idx + xHi) - sum(idx - xLo)) * (xLo && xHi ? half : whole);
-      const double gy = (sum(idx + yHi) - sum(idx - yLo)) * yScale, gz = (sum(idx + zHi) - sum(idx - zLo)) * zScale;
+      const std::size_t idx = row + i;
+      const bool xLo = i > 0, xHi = i + 1 < d.X();
+      const Point3 mean = (fk.NodeGradient(i, j, k) + fk1.NodeGradient(i, j, k)) * 0.5;
+      const double gx = mean[0], gy = mean[1], gz = mean[2];
       const double beta = withPrior ? weight[idx] : 0, ft = (f1[idx] - f0[idx]) / dt;
       g[0][t] = gx, g[1][t] = gy, g[2][t] = gz;
       b[0][t] = -gx * ft, b[1][t] = -gy * ft, b[2][t] = -gz * ft;
@@ -203,7 +200,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
     const double rzNext = precondition(r, z);
     const double beta = rzNext / rz;
     rz = rzNext;
-#pragma omp parallel
+#pragma omp parallel num_threads(Threads())
     for (int e = 0; e < 6; ++e) {  // p = z + beta p
       double *u = pp[e];
       const double *v = pz[e];

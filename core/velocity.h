@@ -20,7 +20,7 @@
 // tangential part too, which Eq. 2 alone leaves to smoothness, so anchor points land
 // on their partners. Without anchors beta = 0 (the paper's Eq. 2). With it (*) reads
 // (g g^T + (alpha n_i + beta_i) I) V_i - alpha sum_j V_j = -g f_t + beta_i P_i,
-// a symmetric positive definite system. Two solvers:
+// a symmetric positive definite system. Three solvers:
 //   - Gauss-Seidel, the paper's update (Eq. 5, derived from (*) with one alpha, by the
 //     Sherman-Morrison formula): V_i = Vbar - g (g . Vbar + f_t) / (alpha n_i + |g|^2),
 //     Vbar = sum_j V_j / n_i; red-black ordering so that both colours run in parallel;

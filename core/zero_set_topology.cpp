@@ -1,9 +1,10 @@
 #include "zero_set_topology.h"
 
+#include "union_find.h"
+
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -300,15 +301,16 @@ struct InsideSetTracker::State {
   //      was a component alone).
   int Part(std::size_t x, bool side, const std::vector<Piece> &pieces);
   // in:  a side, a label of it
-  // out: the label's root (union-find, path compression); label 0 of X' stays a root
-  int Root(bool side, int id);
+  // out: the label's root; label 0 of X' stays a root
+  int Root(bool side, int id) { return Labels(side).Find(id); }
+  UnionFind &Labels(bool side) { return side ? insideLabels : outsideLabels; }
 
   Grid grid;
   Lattice lattice;
   std::vector<std::uint8_t> inside;  // per node: in X in the current frame
   std::vector<double> value;         // per node: f in the current frame
   std::vector<int> label;            // per node: its component's label, on its side (Labelling)
-  std::vector<int> parentInside, parentOutside;  // union-find over each side's labels
+  UnionFind insideLabels, outsideLabels;  // each side's labels, by component
   int components = 0, complementComponents = 0, eulerCharacteristic = 0;
   std::vector<int> mark;  // per node: base + index of the search of Part that reached it
   int markBase = 0;       // marks below it are from earlier calls of Part
@@ -321,18 +323,8 @@ InsideSetTracker::State::State(const ScalarField &first)
   components = l.components;
   complementComponents = 1 + l.cavities;
   eulerCharacteristic = EulerCharacteristic(lattice, inside);
-  parentInside.resize(components);
-  parentOutside.resize(complementComponents);
-  std::iota(parentInside.begin(), parentInside.end(), 0);
-  std::iota(parentOutside.begin(), parentOutside.end(), 0);
-}
-
-int InsideSetTracker::State::Root(bool side, int id) {
-  std::vector<int> &parent = side ? parentInside : parentOutside;
-  int root = id;
-  while (parent[root] != root) root = parent[root];
-  while (parent[id] != root) id = std::exchange(parent[id], root);
-  return root;
+  insideLabels = UnionFind(components);
+  outsideLabels = UnionFind(complementComponents);
 }
 
 void InsideSetTracker::State::Flip(std::size_t x, double crossing, int step, std::vector<TopologyEvent> &events) {
@@ -381,13 +373,11 @@ int InsideSetTracker::State::Join(std::size_t x, bool side, const std::vector<Pi
     roots.push_back(p.beyondGrid ? 0 : Root(side, label[lattice.At(x, __builtin_ctz(p.positions))]));
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-  std::vector<int> &parent = side ? parentInside : parentOutside;
   if (roots.empty()) {
-    label[x] = int(parent.size());
-    parent.push_back(label[x]);
+    label[x] = Labels(side).Add();
     return 0;
   }
-  for (int r : roots) parent[r] = roots.front();  // the smallest label stays the root
+  for (int r : roots) Labels(side).Merge(r, roots.front());  // the smallest label stays the root
   label[x] = roots.front();
   return int(roots.size());
 }
@@ -404,28 +394,23 @@ int InsideSetTracker::State::Part(std::size_t x, bool side, const std::vector<Pi
   // One breadth-first search per piece; searches that meet become one (union-find over
   // them, the smaller frontier appended to the larger). A search of X' that reaches the
   // grid's border has reached the unbounded component and never runs out.
-  std::vector<int> search(count);
-  std::iota(search.begin(), search.end(), 0);
+  UnionFind search(count);
   std::vector<std::vector<std::size_t>> frontier(count);
   std::vector<std::size_t> head(count, 0);
   std::vector<char> unbounded(count, 0);
-  auto find = [&](int s) {
-    while (search[s] != s) s = search[s] = search[search[s]];
-    return s;
-  };
   auto meet = [&](int a, int b) {
-    a = find(a), b = find(b);
+    a = search.Find(a), b = search.Find(b);
     if (a == b) return;
     if (frontier[a].size() - head[a] < frontier[b].size() - head[b]) std::swap(a, b);
     frontier[a].insert(frontier[a].end(), frontier[b].begin() + head[b], frontier[b].end());
     frontier[b] = {};
     head[b] = 0;
     unbounded[a] |= unbounded[b];
-    search[b] = a;
+    search.Merge(b, a);
   };
   int outside = -1;  // a search that reached the unbounded component
   auto reachUnbounded = [&](int s) {
-    unbounded[find(s)] = 1;
+    unbounded[search.Find(s)] = 1;
     if (outside < 0) outside = s;
     meet(s, outside);
   };
@@ -441,16 +426,16 @@ int InsideSetTracker::State::Part(std::size_t x, bool side, const std::vector<Pi
   auto open = [&](int s) { return head[s] < frontier[s].size() || unbounded[s]; };
   for (;;) {
     int searching = 0;
-    for (int s = 0; s < count; ++s) searching += find(s) == s && open(s);
+    for (int s = 0; s < count; ++s) searching += search.Find(s) == s && open(s);
     if (searching <= 1) break;
     for (int s = 0; s < count; ++s) {
-      if (find(s) != s || head[s] == frontier[s].size()) continue;
+      if (search.Find(s) != s || head[s] == frontier[s].size()) continue;
       const std::size_t n = frontier[s][head[s]++];
       lattice.ForEach(n, adjacency, [&](std::size_t y) {
         if (bool(inside[y]) != side) return;  // x itself is already off this side
         if (mark[y] >= base && mark[y] < base + count) return meet(s, mark[y] - base);
         mark[y] = base + s;
-        frontier[find(s)].push_back(y);
+        frontier[search.Find(s)].push_back(y);
         if (!side && lattice.OnBorder(lattice.Node(y))) reachUnbounded(s);
       });
     }
@@ -460,18 +445,16 @@ int InsideSetTracker::State::Part(std::size_t x, bool side, const std::vector<Pi
   // its label, each other is labelled afresh by a flood fill from its pieces.
   std::vector<int> parts;
   for (int s = 0; s < count; ++s)
-    if (find(s) == s) parts.push_back(s);
+    if (search.Find(s) == s) parts.push_back(s);
   int keep = parts.front();
   for (int s : parts)
     if (open(s)) keep = s;
-  std::vector<int> &parent = side ? parentInside : parentOutside;
   std::vector<std::size_t> stack;
   for (int s : parts) {
     if (s == keep) continue;
-    const int fresh = int(parent.size());
-    parent.push_back(fresh);
+    const int fresh = Labels(side).Add();
     for (int piece = 0; piece < count; ++piece)
-      if (find(piece) == s)
+      if (search.Find(piece) == s)
         for (std::uint32_t m = pieces[piece].positions & onGrid; m; m &= m - 1) {
           const std::size_t y = lattice.At(x, __builtin_ctz(m));
           label[y] = fresh;

@@ -79,14 +79,16 @@ void FilterEulermapPlugin::initParameterSet(QAction *, MeshDocument &md, RichPar
   MeshDocument *doc = current ? &md : nullptr;  // RichMesh asserts on a layer not in the document
   DeclareParameters(
       parameters,
-      [&](const ParameterSpec &p) { return RichMesh(p.name, p.name == param::kSourceMesh ? current : other, doc, p.label, p.help); },
-      [](const ParameterSpec &p) { return RichOpenFile(p.name, p.defaultValue.toString(), p.choices, p.label, p.help); });
+      [&](const eulermap::Parameter &p) {
+        return RichMesh(Name(p), Name(p) == eulermap::parameter::kSourceMesh ? current : other, doc, Label(p), Help(p));
+      },
+      [](const eulermap::Parameter &p) { return RichOpenFile(Name(p), QString(), Choices(p), Label(p), Help(p)); });
 }
 
 bool FilterEulermapPlugin::applyFilter(QAction *, MeshDocument &md, const RichParameterList &parameters,
                                        vcg::CallBackPos *cb) {
   const Request request =
-      ReadParameters(parameters, [&](const ParameterSpec &p) { return md.meshList.indexOf(parameters.getMesh(p.name)); });
+      ReadParameters(parameters, [&](const eulermap::Parameter &p) { return md.meshList.indexOf(parameters.getMesh(Name(p))); });
   auto log = [this](const QString &line) { Log(GLLogStream::FILTER, line.toStdString()); };
   eulermap::Result result;
   QString error;

@@ -70,18 +70,18 @@ RichParameterList FilterEulermapPlugin::initParameterList(const QAction *, const
   RichParameterList parameters;
   DeclareParameters(
       parameters,
-      [&](const ParameterSpec &p) {
-        return RichMesh(p.name, p.name == param::kSourceMesh ? current : DefaultTargetLayer(current, layers), &md,
-                        p.label, p.help);
+      [&](const eulermap::Parameter &p) {
+        return RichMesh(Name(p), Name(p) == eulermap::parameter::kSourceMesh ? current : DefaultTargetLayer(current, layers), &md,
+                        Label(p), Help(p));
       },
-      [](const ParameterSpec &p) { return RichFileOpen(p.name, p.defaultValue.toString(), p.choices, p.label, p.help); });
+      [](const eulermap::Parameter &p) { return RichFileOpen(Name(p), QString(), Choices(p), Label(p), Help(p)); });
   return parameters;
 }
 
 std::map<std::string, QVariant> FilterEulermapPlugin::applyFilter(const QAction *, const RichParameterList &parameters,
                                                                   MeshDocument &md, unsigned int &,
                                                                   vcg::CallBackPos *cb) {
-  const Request request = ReadParameters(parameters, [&](const ParameterSpec &p) { return int(parameters.getMeshId(p.name)); });
+  const Request request = ReadParameters(parameters, [&](const eulermap::Parameter &p) { return int(parameters.getMeshId(Name(p))); });
   auto log = [this](const QString &line) { this->log(GLLogStream::FILTER, line.toStdString()); };
   eulermap::Result result;
   QString error;

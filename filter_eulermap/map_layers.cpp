@@ -24,13 +24,13 @@ bool CheckLayerChoice(const Request &request, const std::vector<int> &layers, QS
     error = "no target mesh: load the surface to map onto as another layer and choose it as target_mesh";
     return false;
   }
-  QStringList names;
-  for (int n : layers) names << QString::number(n);
-  for (const auto &[parameter, layer] : {std::pair(param::kSourceMesh, request.sourceLayer),
-                                         std::pair(param::kTargetMesh, request.targetLayer)}) {
+  QStringList numbers;
+  for (int n : layers) numbers << QString::number(n);
+  for (const auto &[name, layer] : {std::pair(parameter::kSourceMesh, request.sourceLayer),
+                                    std::pair(parameter::kTargetMesh, request.targetLayer)}) {
     if (std::find(layers.begin(), layers.end(), layer) == layers.end()) {
       error = QString("%1: layer %2 does not exist (the document has layers %3)")
-                  .arg(parameter).arg(layer).arg(names.join(", "));
+                  .arg(name).arg(layer).arg(numbers.join(", "));
       return false;
     }
   }
@@ -66,9 +66,9 @@ bool MapLayers(const Request &request, InputLayer &source, InputLayer &target, c
   log << notes;
 
   Options options = request.options;
-  options.transferColour = request.transferColorQuality && target.has.vertexColours;
-  options.transferQuality = request.transferColorQuality && target.has.vertexQuality;
-  if (request.transferColorQuality && !target.has.vertexColours && !target.has.vertexQuality)
+  options.transferColour = request.options.transferColour && target.has.vertexColours;
+  options.transferQuality = request.options.transferQuality && target.has.vertexQuality;
+  if (request.options.transferColour && !target.has.vertexColours && !target.has.vertexQuality)
     log << QString("note: transfer_color_quality: the target '%1' has no per-vertex colour or quality, so "
                    "none is transferred").arg(target.label);
   if (request.options.transferTexture && !target.has.wedgeTexCoords && !target.has.vertexTexCoords)
@@ -113,7 +113,7 @@ OutputLayers OutputComponents(const Request &request, const InputLayer &source, 
     out.cut.vertexTexCoords = false;
     out.cutHasTargetTextures = true;
   }
-  out.cut.vertexColours = source.has.vertexColours || (request.transferColorQuality && target.has.vertexColours);
+  out.cut.vertexColours = source.has.vertexColours || (request.options.transferColour && target.has.vertexColours);
   return out;
 }
 
@@ -121,37 +121,11 @@ QString LayerLine(const QString &label, const Mesh &mesh) {
   return QString("new layer %1: %2 vertices, %3 faces").arg(label).arg(mesh.VN()).arg(mesh.FN());
 }
 
-std::map<std::string, QVariant> ReportFigures(const Report &r) {
-  const MapQuality &q = r.quality;
-  return {
-      {"repairs", int(r.repairs.size())},
-      {"warnings", int(r.warnings.size())},
-      {"grid_cell_size", r.cellSize},
-      {"steps", r.steps},
-      {"anchors", r.anchors},
-      {"topology_events", int(r.topologyEvents.size())},
-      {"holes", r.HolesCut()},
-      {"cut_vertices", r.cutVertices},
-      {"cut_faces", r.cutFaces},
-      {"cut_components", r.cutComponents},
-      {"cut_boundary_loops", r.cutBoundaryLoops},
-      {"cut_euler_characteristic", r.cutEulerCharacteristic},
-      {"points_added", r.pointsAdded},
-      {"on_surface_rate", q.onSurfaceRate},
-      {"coverage", q.coverage},
-      {"flipped_area_share", q.flippedAreaShare},
-      {"flipped_before_untangling", q.flippedBeforeUntangling},
-      {"longest_edge_cells", q.longestEdgeCells},
-      {"anchor_error_cells", q.anchorErrorCells},
-      {"anchor_error_resolved_cells", q.ResolvedAnchorErrorCells()},
-      {"mean_distortion", q.meanDistortion},
-      {"solver_iterations", double(r.solverFigures.totalIterations)},
-      {"time_sdf_s", r.times.sdf},
-      {"time_int_s", r.times.interp},
-      {"time_vf_s", r.times.velocity},
-      {"time_def_s", r.times.deform},
-      {"time_total_s", r.times.Total()},
-  };
+std::map<std::string, QVariant> ReportFigures(const Report &report) {
+  std::map<std::string, QVariant> figures;
+  for (const Figure &f : FigureTable())
+    figures[f.name] = f.unit == FigureUnit::Count ? QVariant(int(f.value(report))) : QVariant(f.value(report));
+  return figures;
 }
 
 }  // namespace eulermap::plugin

@@ -63,10 +63,10 @@ OutputLayers OutputComponents(const Request &request, const InputLayer &source, 
 // "new layer spot_cut: 2930 vertices, 5856 faces", for the log.
 QString LayerLine(const QString &label, const Mesh &mesh);
 
-// The report's figures by snake_case name (on_surface_rate, coverage, cut_boundary_loops,
-// time_total_s, ...: see map_layers.cpp) as numbers (rates and shares in [0, 1], times in
-// seconds), for flavours whose filters return values (pymeshlab's apply_filter returns
-// them as a dict).
+// The report's figures (core/report.h, FigureTable(): on_surface_rate, coverage,
+// cut_boundary_loops, time_total_s, ...) by name, as numbers (counts as int, rates and
+// shares in [0, 1], times in seconds), for flavours whose filters return values
+// (pymeshlab's apply_filter returns them as a dict).
 std::map<std::string, QVariant> ReportFigures(const Report &report);
 
 }  // namespace eulermap::plugin

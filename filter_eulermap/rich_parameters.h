@@ -12,19 +12,21 @@
 namespace eulermap::plugin {
 
 // in:  list, a MeshLab parameter list; mesh(p), openFile(p): the flavour's Rich parameter
-//      for a Mesh / OpenFile ParameterSpec
-// out: every parameter of Parameters() added to list, in order, with its label and help
+//      for a Mesh / OpenFile entry of the table
+// out: every parameter of the filter (Parameter::inFilter) added to list, in order, with its
+//      default, label and help
 template <class List, class MakeMesh, class MakeOpenFile>
 void DeclareParameters(List &list, MakeMesh &&mesh, MakeOpenFile &&openFile) {
-  for (const ParameterSpec &p : Parameters()) {
+  for (const Parameter &p : Parameters()) {
+    if (!p.inFilter) continue;
     switch (p.kind) {
     case ParameterKind::Mesh: list.addParam(mesh(p)); break;
-    case ParameterKind::Int: list.addParam(RichInt(p.name, p.defaultValue.toInt(), p.label, p.help)); break;
-    case ParameterKind::Float: list.addParam(RichFloat(p.name, p.defaultValue.toDouble(), p.label, p.help)); break;
-    case ParameterKind::Enum: list.addParam(RichEnum(p.name, p.defaultValue.toInt(), p.choices, p.label, p.help)); break;
-    case ParameterKind::Bool: list.addParam(RichBool(p.name, p.defaultValue.toBool(), p.label, p.help)); break;
+    case ParameterKind::Int: list.addParam(RichInt(Name(p), int(p.Default()), Label(p), Help(p))); break;
+    case ParameterKind::Float: list.addParam(RichFloat(Name(p), p.Default(), Label(p), Help(p))); break;
+    case ParameterKind::Enum: list.addParam(RichEnum(Name(p), int(p.Default()), Choices(p), Label(p), Help(p))); break;
+    case ParameterKind::Bool: list.addParam(RichBool(Name(p), p.Default() != 0, Label(p), Help(p))); break;
     case ParameterKind::OpenFile: list.addParam(openFile(p)); break;
-    case ParameterKind::String: list.addParam(RichString(p.name, p.defaultValue.toString(), p.label, p.help)); break;
+    case ParameterKind::String: list.addParam(RichString(Name(p), QString(), Label(p), Help(p))); break;
     }
   }
 }
@@ -34,15 +36,16 @@ void DeclareParameters(List &list, MakeMesh &&mesh, MakeOpenFile &&openFile) {
 // out: the Request
 template <class List, class MeshLayer>
 Request ReadParameters(const List &list, MeshLayer &&meshLayer) {
-  return ReadRequest([&](const ParameterSpec &p) -> QVariant {
+  return ReadRequest([&](const Parameter &p) -> QVariant {
+    const QString name = Name(p);
     switch (p.kind) {
     case ParameterKind::Mesh: return meshLayer(p);
-    case ParameterKind::Int: return list.getInt(p.name);
-    case ParameterKind::Float: return double(list.getFloat(p.name));
-    case ParameterKind::Enum: return list.getEnum(p.name);
-    case ParameterKind::Bool: return list.getBool(p.name);
-    case ParameterKind::OpenFile: return list.getOpenFileName(p.name);
-    case ParameterKind::String: return list.getString(p.name);
+    case ParameterKind::Int: return list.getInt(name);
+    case ParameterKind::Float: return double(list.getFloat(name));
+    case ParameterKind::Enum: return list.getEnum(name);
+    case ParameterKind::Bool: return double(list.getBool(name));
+    case ParameterKind::OpenFile: return list.getOpenFileName(name);
+    case ParameterKind::String: return list.getString(name);
     }
     return {};
   });

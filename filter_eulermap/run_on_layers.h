@@ -60,7 +60,7 @@ void FillLayer(Model &m, const Mesh &mesh, const LayerComponents &has, const Mes
   if (has.wedgeTexCoords) mask |= Model::MM_WEDGTEXCOORD;
   if (has.vertexTexCoords) mask |= Model::MM_VERTTEXCOORD;
   m.updateDataMask(mask);
-  CoreToLayer(mesh, has, m.cm);
+  CopyMesh(mesh, has, m.cm);
   if (!targetPositions) return;
   auto target = vcg::tri::Allocator<LayerMesh>::template GetPerVertexAttribute<Point>(m.cm, "TargetPosition");
   size_t i = 0;

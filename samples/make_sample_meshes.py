@@ -28,6 +28,7 @@ import os
 import shutil
 import subprocess
 
+import mesh_io
 import obj_to_ply
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -67,7 +68,7 @@ def normalize(v):
 
 def torus(R, r, ring, tube):
     """Vertices, texture coordinates, faces and each face's three indices into them (as
-    obj_to_ply.read_obj gives them)."""
+    mesh_io.Mesh holds them)."""
     verts, uvs, faces, wedges = [], [], [], []
     for i in range(ring):
         for j in range(tube):
@@ -103,21 +104,26 @@ def spot_checker(path, cells=12, size=768):
 
 
 def main():
-    v, f = icosphere(4)
-    obj_to_ply.write_ply(os.path.join(HERE, "sphere.ply"), v, [], f, [None] * len(f), None)
+    sphere = mesh_io.Mesh()
+    sphere.verts, sphere.faces = icosphere(4)
+    mesh_io.write_ply(os.path.join(HERE, "sphere.ply"), sphere)
     texture = "torus_checker.png"
     if shutil.which("convert") and not os.path.exists(os.path.join(HERE, texture)):
         # 8 x 8 blue and white squares
         subprocess.run(["convert", "-size", "64x64", "xc:white", "-fill", "#3070c0", "-draw", "rectangle 0,0 31,31",
                         "-draw", "rectangle 32,32 63,63", "-write", "mpr:tile", "+delete", "-size", "256x256",
                         "tile:mpr:tile", "-strip", os.path.join(HERE, texture)], check=True)
-    obj_to_ply.write_ply(os.path.join(HERE, "torus.ply"), *torus(1.0, 0.4, 64, 32), texture)
+    ring = mesh_io.Mesh()
+    ring.verts, ring.uvs, ring.faces, ring.wedges = torus(1.0, 0.4, 64, 32)
+    ring.textures = [texture]
+    mesh_io.write_ply(os.path.join(HERE, "torus.ply"), ring)
     if os.path.isdir(SHARED):
         spot_texture = "spot_checker.png"
         if shutil.which("convert") and not os.path.exists(os.path.join(HERE, spot_texture)):
             spot_checker(os.path.join(HERE, spot_texture))
-        verts, uvs, faces, wedges, _ = obj_to_ply.read_obj(os.path.join(SHARED, "spot.obj"))
-        obj_to_ply.write_ply(os.path.join(HERE, "spot.ply"), verts, uvs, faces, wedges, spot_texture)
+        spot = mesh_io.read_mesh(os.path.join(SHARED, "spot.obj"))
+        spot.textures = [spot_texture]
+        mesh_io.write_ply(os.path.join(HERE, "spot.ply"), spot)
         obj_to_ply.convert(os.path.join(SHARED, "rocker-arm.obj"), os.path.join(HERE, "rocker-arm.ply"))
         shutil.copyfile(os.path.join(SHARED, "cow.off"), os.path.join(HERE, "cow.off"))
     else:

@@ -17,8 +17,8 @@
 #                   meshlabserver.log and meshlabserver.out.
 #   --grid N        cells on the longest axis of the grid (default 64)
 #   --steps N       time steps (default 40)
-# Needs the plugin installed (cmake --install build). Exits non-zero, with the filter's
-# message, when the map fails.
+# Needs the project built (setup/build.sh) and the plugin installed (cmake --install build).
+# Exits non-zero, with the filter's message, when the map fails.
 set -euo pipefail
 
 usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
@@ -45,10 +45,12 @@ command -v meshlabserver >/dev/null || { echo "map_meshes.sh: meshlabserver not 
 command -v xvfb-run >/dev/null || { echo "map_meshes.sh: xvfb-run not found (apt-get install xvfb xauth)" >&2; exit 2; }
 plugin=/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_eulermap.so
 [ -f "$plugin" ] || { echo "map_meshes.sh: $plugin missing: build and install the plugin (cmake --install build)" >&2; exit 2; }
+here=$(cd "$(dirname "$0")" && pwd)
+bench="$here/../build/tests/bench/eulermap_bench"  # writes the .mlx script
+[ -x "$bench" ] || { echo "map_meshes.sh: $bench missing: build the project (bash setup/build.sh)" >&2; exit 2; }
 
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-here=$(cd "$(dirname "$0")" && pwd)
 
 # Debian's MeshLab 2020.09 aborts on every .obj (vcglib import_obj.h assertion): hand it a
 # PLY copy, with the .pp files beside it, so that default anchors still apply.
@@ -71,27 +73,9 @@ target_mesh=$(as_ply "$target_mesh")
 script="$out/map.mlx" log="$out/meshlabserver.log"
 rm -f "$out/cut.ply" "$out/mapped.ply" "$out/report.txt" "$log"
 
-# Every parameter of the filter, in its order (meshlabserver 2020.09 asserts otherwise).
-cat > "$script" <<EOF
-<!DOCTYPE FilterScript>
-<FilterScript>
- <filter name="Eulerian Surface Map">
-  <Param type="RichMesh" name="source_mesh" value="0"/>
-  <Param type="RichMesh" name="target_mesh" value="1"/>
-  <Param type="RichInt" name="grid_resolution" value="$grid"/>
-  <Param type="RichInt" name="steps" value="$steps"/>
-  <Param type="RichFloat" name="alpha" value="2"/>
-  <Param type="RichFloat" name="hole_radius" value="1"/>
-  <Param type="RichEnum" name="align" value="1" enum_cardinality="2" enum_val0="none" enum_val1="centre-and-scale"/>
-  <Param type="RichOpenFile" name="source_anchors" value="" exts_cardinality="1" exts_val0="*.pp"/>
-  <Param type="RichOpenFile" name="target_anchors" value="" exts_cardinality="1" exts_val0="*.pp"/>
-  <Param type="RichString" name="anchor_pairs" value=""/>
-  <Param type="RichBool" name="fill_holes" value="false"/>
-  <Param type="RichBool" name="transfer_texture" value="true"/>
-  <Param type="RichBool" name="transfer_color_quality" value="false"/>
- </filter>
-</FilterScript>
-EOF
+# Every parameter of the filter, in its order (meshlabserver 2020.09 asserts otherwise), from
+# the core's table (core/parameters.h).
+"$bench" mlx grid_resolution="$grid" steps="$steps" > "$script"
 
 # -l LOG must come before the -o options (after -o, -l names the layer to save).
 status=0

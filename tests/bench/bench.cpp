@@ -10,14 +10,21 @@
 //                                                           and as a triangle soup (every face its own vertices)
 //   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N]
 //   options of every mode: --alpha A --anchor-weight B (velocity.h)
+//   eulermap_bench header                                   the header of the table `row` and `grid` print
+//   eulermap_bench mlx [NAME=VALUE ...]                     a complete meshlabserver script of the filter
+//                                                           (core/parameters.h; defaults for the rest)
+//   eulermap_bench parameters                               the README's parameter list
 //
 // `row` and `grid` print one line of the table (`|`-separated); `map` prints the report.
 #include "tests/support/meshes.h"
+
+#include "core/parameters.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <string>
 
 using namespace eulermap;
@@ -48,22 +55,48 @@ const Row kRows[4] = {
     {"camelhead.off", 1, {40, 30, 40}, 21, 1, 44170, 8, 34, 56},
 };
 
+// The row's columns: the configuration, its grid, the figures of the report marked for the
+// benchmark (report.h, FigureTable()), the speed-ups, the velocity solver.
+std::string Header() {
+  std::string text = "configuration | grid nodes";
+  for (const Figure &f : FigureTable())
+    if (f.benchmark)
+      text += std::string(" | ") + f.label +
+              (f.unit == FigureUnit::Share ? " %" : f.unit == FigureUnit::Seconds ? " s" : f.unit == FigureUnit::Cells ? ", cells" : "");
+  return text + " | speed-up over the paper, our SDF included | speed-up, INT+VF+DEF only (the paper's columns) | velocity solver";
+}
+
 // The speed-ups: the paper's INT+VF+DEF over ours with our SDF included (the paper's table
 // has no SDF column), and over our INT+VF+DEF alone (like for like).
 void PrintRow(const std::string &name, const Report &r, double paperTotal) {
   const StageTimes &t = r.times;
-  const double stages = t.interp + t.velocity + t.deform;
   auto ratio = [&](double ours) {
     char text[32] = "";
     if (paperTotal > 0) std::snprintf(text, sizeof text, "%.1f", paperTotal / ours);
     return std::string(text);
   };
-  std::printf("%s | %dx%dx%d | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %ld / %d | %.0f | %.2f | %.2f | %.2f | %.2f / %.2f | %s | %s | %s\n",
-              name.c_str(), r.gridNodes.X(), r.gridNodes.Y(), r.gridNodes.Z(), r.sourceVertices, r.anchors, t.sdf, t.interp,
-              t.velocity, t.deform, t.Total(), r.solverFigures.totalIterations, r.solverFigures.maxIterations,
-              r.peakMemoryKiB / 1024.0, 100 * r.quality.onSurfaceRate, 100 * r.quality.coverage,
-              100 * r.quality.flippedAreaShare, r.quality.anchorErrorCells, r.quality.ResolvedAnchorErrorCells(),
-              ratio(t.Total()).c_str(), ratio(stages).c_str(), r.solver.c_str());
+  std::printf("%s | %dx%dx%d", name.c_str(), r.gridNodes.X(), r.gridNodes.Y(), r.gridNodes.Z());
+  for (const Figure &f : FigureTable()) {
+    if (!f.benchmark) continue;
+    std::string text = f.Text(r);
+    if (f.unit == FigureUnit::Share) text.pop_back();  // the header says %
+    if (f.unit == FigureUnit::Cells) text.resize(text.size() - 6);  // " cells": the header says so
+    std::printf(" | %s", text.c_str());
+  }
+  std::printf(" | %s | %s | %s\n", ratio(t.Total()).c_str(), ratio(t.interp + t.velocity + t.deform).c_str(),
+              r.solver.c_str());
+}
+
+// "name=value" arguments from argv[first] on.
+std::map<std::string, std::string> Assignments(int argc, char **argv, int first) {
+  std::map<std::string, std::string> values;
+  for (int i = first; i < argc; ++i) {
+    const std::string a = argv[i];
+    const std::size_t eq = a.find('=');
+    if (eq == std::string::npos) throw Error("expected NAME=VALUE, got " + a);
+    values[a.substr(0, eq)] = a.substr(eq + 1);
+  }
+  return values;
 }
 
 int Flag(int argc, char **argv, const char *name, int fallback) {
@@ -98,8 +131,21 @@ Options OptionsFrom(int argc, char **argv) {
 } // namespace
 
 int main(int argc, char **argv) {
+  const std::string command = argc > 1 ? argv[1] : "";
+  try {
+    if (command == "header") return std::printf("%s\n", Header().c_str()), 0;
+    if (command == "parameters") return std::printf("%s", ParametersMarkdown().c_str()), 0;
+    if (command == "mlx")
+      return std::printf("<!DOCTYPE FilterScript>\n<FilterScript>\n%s</FilterScript>\n",
+                         MlxFilter(Assignments(argc, argv, 2)).c_str()),
+             0;
+  } catch (const std::exception &e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s row N | grid CELLS | map SOURCE TARGET [SOURCE.pp TARGET.pp] [options]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s row N | grid CELLS | map SOURCE TARGET [SOURCE.pp TARGET.pp] [options] | header | "
+                         "mlx [NAME=VALUE ...] | parameters\n", argv[0]);
     return 2;
   }
   const std::string mode = argv[1];

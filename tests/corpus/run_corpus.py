@@ -42,7 +42,7 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path[:0] = [HERE, os.path.join(ROOT, "tests", "meshlab")]
 import cases as corpus  # noqa: E402
 import meshes  # noqa: E402  the MeshLab tests' mesh reader
-import run_tests  # noqa: E402  the MeshLab tests: mlx_text, filter_log, failure_message, CRASH_CODES
+import meshlab_host  # noqa: E402  shared with the MeshLab tests: mlx_text, filter_log, failure_message, CRASH_CODES
 
 SAMPLES = os.path.join(ROOT, "samples")
 OUT = os.path.join(ROOT, "out", "corpus")
@@ -52,7 +52,7 @@ PLUGIN_2025 = os.environ.get("EULERMAP_PLUGIN") or os.path.join(ROOT, "build", "
 MEMORY_LIMIT = int(os.environ.get("CORPUS_MEMORY_LIMIT", 6 << 30))  # bytes of address space per run
 TIMEOUT = int(os.environ.get("CORPUS_TIMEOUT", 60))  # seconds per run
 HOSTS = ("meshlabserver", "pymeshlab")
-CRASH_CODES = run_tests.CRASH_CODES
+CRASH_CODES = meshlab_host.CRASH_CODES
 LOW = 0.9  # below this coverage or on-surface rate a success must warn (core/pipeline.cpp, WarnOnFailure)
 
 
@@ -176,7 +176,7 @@ def run_meshlabserver(case, job, display):
     os.makedirs(d, exist_ok=True)
     script = os.path.join(d, "script.mlx")
     with open(script, "w") as f:
-        f.write(run_tests.mlx_text(**job["params"]))
+        f.write(meshlab_host.mlx_text(**job["params"]))
     log = os.path.join(d, "meshlabserver.log")
     cut, mapped = os.path.join(d, "cut.ply"), os.path.join(d, "mapped.ply")
     cmd = ["meshlabserver", "-l", log, "-i", job["meshes"]["source"]["file"], job["meshes"]["target"]["file"],
@@ -185,18 +185,18 @@ def run_meshlabserver(case, job, display):
     rc, seconds, peak = run_limited(cmd, os.path.join(d, "meshlabserver.out"), env)
     text = open(log, errors="replace").read() if os.path.exists(log) else ""
     out_text = open(os.path.join(d, "meshlabserver.out"), errors="replace").read()
-    lines = run_tests.filter_log(text)
+    lines = meshlab_host.filter_log(text)
     res = {"rc": rc, "seconds": seconds, "peak_mib": peak, "log": lines, "tail": (text or out_text).splitlines()[-8:]}
     if "Assertion" in out_text:
         res["assertion"] = next(l for l in out_text.splitlines() if "Assertion" in l)
-    failed = [l for l in text.splitlines() if l.startswith(run_tests.FAILED_PREFIX)]
+    failed = [l for l in text.splitlines() if l.startswith(meshlab_host.FAILED_PREFIX)]
     if rc == 0:
         res["outcome"] = "success"
         res["figures"] = parse_figures(lines)
         for name, path in (("cut", cut), ("mapped", mapped)):
             res[name] = layer_figures(path) if os.path.isfile(path) else None
     elif rc == 255 and failed:
-        res.update(outcome="error", message=failed[0][len(run_tests.FAILED_PREFIX):])
+        res.update(outcome="error", message=failed[0][len(meshlab_host.FAILED_PREFIX):])
     else:
         res["outcome"] = "other"
     return res
@@ -365,8 +365,8 @@ def main():
     os.makedirs(OUT, exist_ok=True)
 
     problems = []
-    if "meshlabserver" in hosts and not os.path.isfile(run_tests.PLUGIN):
-        problems.append(f"{run_tests.PLUGIN} missing: cmake --install build")
+    if "meshlabserver" in hosts and not os.path.isfile(meshlab_host.PLUGIN):
+        problems.append(f"{meshlab_host.PLUGIN} missing: cmake --install build")
     if "pymeshlab" in hosts:
         for need in (VENV_PYTHON, PLUGIN_2025):
             if not os.path.exists(need):
@@ -380,13 +380,13 @@ def main():
     built = os.path.join(ROOT, "build", "filter_eulermap", "libfilter_eulermap.so")
     plugins = []  # which builds the table reflects
     if "meshlabserver" in hosts:
-        installed = run_tests.build_id(run_tests.PLUGIN)
-        plugins.append(f"meshlabserver: {run_tests.PLUGIN} (build ID {installed[:12]})")
-        if os.path.isfile(built) and run_tests.build_id(built) != installed:
-            print(f"note: the installed {run_tests.PLUGIN} is not build/'s {os.path.basename(built)}: "
+        installed = meshlab_host.build_id(meshlab_host.PLUGIN)
+        plugins.append(f"meshlabserver: {meshlab_host.PLUGIN} (build ID {installed[:12]})")
+        if os.path.isfile(built) and meshlab_host.build_id(built) != installed:
+            print(f"note: the installed {meshlab_host.PLUGIN} is not build/'s {os.path.basename(built)}: "
                   "meshlabserver runs the installed one (cmake --install build)", flush=True)
     if "pymeshlab" in hosts:
-        plugins.append(f"pymeshlab: {PLUGIN_2025} (build ID {run_tests.build_id(PLUGIN_2025)[:12]})")
+        plugins.append(f"pymeshlab: {PLUGIN_2025} (build ID {meshlab_host.build_id(PLUGIN_2025)[:12]})")
     all_cases = [c for c in corpus.cases(SAMPLES) if args.k in c.name]
     jobs = {c.name: prepare(c) for c in all_cases}
     xvfb, display = start_xvfb() if "meshlabserver" in hosts else (None, None)

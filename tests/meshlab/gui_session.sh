@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One MeshLab GUI session for tests/meshlab/run_tests.py, run inside xvfb-run (screen
+# One MeshLab GUI session for tests/meshlab/test_meshlab.py, run inside xvfb-run (screen
 # 1280x960x24, no window manager: MeshLab's window sits at the top left).
 # Usage: gui_session.sh SAMPLES SHOTS OUTDIR XDOTOOL(0|1)
 # Opens torus.ply and sphere.ply (sphere is the current layer, so the source; the torus the

@@ -1,133 +1,16 @@
-"""Small mesh readers and measures for the MeshLab integration tests (standard library only).
+"""Measures of meshes for the MeshLab integration tests (standard library only); the meshes
+are read by samples/mesh_io.py (read_mesh, Mesh: .verts, .faces, .vertex, .face_props,
+.comments, .textures).
 
-read_mesh(path) -> Mesh with .verts [(x, y, z)], .faces [(i, j, k)], .vertex (all per-vertex
-PLY properties by name), .face_props, .comments; PLY (ascii / binary), OFF and OBJ.
 topology(mesh) -> (components, boundary loops, Euler characteristic) of the referenced part.
 on_surface_rate(points, mesh, tolerance) -> share of points within `tolerance` of the surface.
 """
 import math
-import struct
+import os
+import sys
 
-_PLY_TYPES = {
-    "char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h",
-    "ushort": "H", "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I",
-    "float": "f", "float32": "f", "double": "d", "float64": "d",
-}
-
-
-class Mesh:
-    def __init__(self):
-        self.verts, self.faces = [], []
-        self.vertex, self.face_props = {}, {}
-        self.comments = []
-
-
-def read_mesh(path):
-    lower = path.lower()
-    if lower.endswith(".ply"):
-        return _read_ply(path)
-    if lower.endswith(".off"):
-        return _read_off(path)
-    if lower.endswith(".obj"):
-        return _read_obj(path)
-    raise ValueError("unknown mesh format: " + path)
-
-
-def _read_off(path):
-    m = Mesh()
-    tokens = open(path).read().split()
-    if tokens[0] != "OFF":
-        raise ValueError(path + " is not an OFF file")
-    nv, nf = int(tokens[1]), int(tokens[2])
-    i = 4
-    for _ in range(nv):
-        m.verts.append(tuple(float(x) for x in tokens[i:i + 3]))
-        i += 3
-    for _ in range(nf):
-        n = int(tokens[i])
-        idx = [int(x) for x in tokens[i + 1:i + 1 + n]]
-        m.faces += [(idx[0], idx[k], idx[k + 1]) for k in range(1, n - 1)]
-        i += 1 + n
-    return m
-
-
-def _read_obj(path):
-    m = Mesh()
-    for line in open(path):
-        t = line.split()
-        if t and t[0] == "v":
-            m.verts.append(tuple(float(x) for x in t[1:4]))
-        elif t and t[0] == "f":
-            idx = [int(c.split("/")[0]) - 1 for c in t[1:]]
-            m.faces += [(idx[0], idx[k], idx[k + 1]) for k in range(1, len(idx) - 1)]
-    return m
-
-
-def _read_ply(path):
-    m = Mesh()
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"ply":
-            raise ValueError(path + " is not a PLY file")
-        fmt, elements = None, []
-        while True:
-            line = f.readline()
-            if not line:
-                raise ValueError(path + ": PLY header without end_header")
-            t = line.decode("ascii", "replace").split()
-            if not t:
-                continue
-            if t[0] == "format":
-                fmt = t[1]
-            elif t[0] == "comment":
-                m.comments.append(" ".join(t[1:]))
-            elif t[0] == "element":
-                elements.append((t[1], int(t[2]), []))
-            elif t[0] == "property":
-                if t[1] == "list":
-                    elements[-1][2].append((t[4], "list", t[2], t[3]))
-                else:
-                    elements[-1][2].append((t[2], "scalar", t[1], None))
-            elif t[0] == "end_header":
-                break
-        if fmt == "ascii":
-            words = f.read().split()
-            pos = 0
-
-            def scalar(kind):
-                nonlocal pos
-                w = words[pos]
-                pos += 1
-                return float(w) if _PLY_TYPES[kind] in "fd" else int(w)
-        elif fmt == "binary_little_endian":
-            data = f.read()
-            pos = 0
-
-            def scalar(kind):
-                nonlocal pos
-                code = "<" + _PLY_TYPES[kind]
-                (value,) = struct.unpack_from(code, data, pos)
-                pos += struct.calcsize(code)
-                return value
-        else:
-            raise ValueError(path + ": PLY format %s not supported" % fmt)
-        for name, count, props in elements:
-            columns = {p[0]: [] for p in props}
-            for _ in range(count):
-                for pname, shape, a, b in props:
-                    if shape == "list":
-                        n = scalar(a)
-                        columns[pname].append([scalar(b) for _ in range(n)])
-                    else:
-                        columns[pname].append(scalar(a))
-            if name == "vertex":
-                m.vertex = columns
-                m.verts = list(zip(columns["x"], columns["y"], columns["z"]))
-            elif name == "face":
-                m.face_props = columns
-                key = "vertex_indices" if "vertex_indices" in columns else "vertex_index"
-                for idx in columns[key]:
-                    m.faces += [(idx[0], idx[k], idx[k + 1]) for k in range(1, len(idx) - 1)]
-    return m
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "samples"))
+from mesh_io import Mesh, read_mesh  # noqa: E402,F401  (the tests read meshes through this module)
 
 
 def diagonal(points):

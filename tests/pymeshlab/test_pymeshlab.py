@@ -8,7 +8,7 @@ What it checks, in PyPI's pymeshlab 2025.7.post1 (.venv):
     pymeshlab lists and finds the filter, with the parameters of parameters.h;
   - the sample runs of the MeshLab tests that pymeshlab shares (sphere -> torus, spot -> cow
     with anchors), through samples/map_meshes.py's map_meshes(): the same checks as
-    tests/meshlab/run_tests.py (cut topology, >= 99% of the mapped vertices within 0.5% of
+    tests/meshlab/meshlab_host.py (cut topology, >= 99% of the mapped vertices within 0.5% of
     the target's diagonal, before and after the final projection, the log, the input layers
     and files unchanged), and that the figures the filter returns agree with the files;
   - samples/map_meshes.py as a command, with and without a failure;
@@ -32,12 +32,12 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path[:0] = [os.path.join(ROOT, "samples"), os.path.join(ROOT, "tests", "meshlab")]
 import map_meshes  # noqa: E402  the sample script, as a module
 import meshes  # noqa: E402  the MeshLab tests' mesh reader and measures
-import run_tests  # noqa: E402  the MeshLab tests: their sample expectations and bad inputs
+import meshlab_host  # noqa: E402  shared with the MeshLab tests: the sample expectations and bad inputs
 
 SAMPLES = os.path.join(ROOT, "samples")
 OUT = os.path.join(ROOT, "out", "pymeshlab")
 FILTER = map_meshes.FILTER
-SAMPLE_RUNS = [run for run in run_tests.SAMPLE_RUNS if run[0] in ("sphere_to_torus", "spot_to_cow")]
+SAMPLE_RUNS = [run for run in meshlab_host.SAMPLE_RUNS if run[0] in ("sphere_to_torus", "spot_to_cow")]
 
 
 @pytest.fixture(scope="session", autouse=True)
@@ -58,17 +58,17 @@ def test_plugin_lists_filter(capfd):
     pymeshlab.search("eulerian")
     assert FILTER in capfd.readouterr().out, "pymeshlab.search('eulerian') does not find the filter"
     ms = mesh_set(os.path.join(SAMPLES, "sphere.ply"))
-    assert list(ms.filter_parameter_values(FILTER)) == run_tests.plugin_parameter_names()
+    assert list(ms.filter_parameter_values(FILTER)) == meshlab_host.plugin_parameter_names()
 
 
 @pytest.mark.parametrize("name,source,target,expect", SAMPLE_RUNS, ids=[run[0] for run in SAMPLE_RUNS])
 def test_sample(name, source, target, expect):
     outdir = os.path.join(OUT, name)
     shutil.rmtree(outdir, ignore_errors=True)
-    before = run_tests.sample_checksums()
+    before = meshlab_host.sample_checksums()
     src, tgt = os.path.join(SAMPLES, source), os.path.join(SAMPLES, target)
     ms, figures, log = map_meshes.map_meshes(src, tgt, outdir)
-    assert run_tests.sample_checksums() == before, "the run changed files in samples/"
+    assert meshlab_host.sample_checksums() == before, "the run changed files in samples/"
 
     base = os.path.splitext(source)[0]
     for line in ("Eulerian Surface Map: ", "grid: ", "times (s): ", "map quality: ", f"new layer {base}_cut: ",
@@ -203,7 +203,7 @@ def test_map_meshes_command():
 # what only pymeshlab can pass: ids of no layer.
 _BAD_DIR = tempfile.mkdtemp(prefix="eulermap-pymeshlab-")
 _SPHERE, _TORUS = os.path.join(SAMPLES, "sphere.ply"), os.path.join(SAMPLES, "torus.ply")
-BAD_INPUTS = run_tests.bad_inputs(_BAD_DIR) + [
+BAD_INPUTS = meshlab_host.bad_inputs(_BAD_DIR) + [
     ("no_target_by_default", [_SPHERE], {}, "no target mesh"),
     ("target_id_missing", [_SPHERE, _TORUS], dict(target_mesh=99), "target_mesh: layer 99 does not exist"),
     ("source_id_missing", [_SPHERE, _TORUS], dict(source_mesh=7), "source_mesh: layer 7 does not exist"),

@@ -1,4 +1,4 @@
-// Families of shapes for topology change (issue 12), made as implicit surfaces (meshes.h,
+// Families of shapes for topology change, made as implicit surfaces (meshes.h,
 // MakeImplicit), closed and outward-oriented, about 2 units across. Each is named by what
 // it is and its topology, so a test or the benchmark can ask for any of them by name.
 //   sphere                  a ball, radius 0.7                                   genus 0

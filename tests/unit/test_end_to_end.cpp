@@ -1,4 +1,4 @@
-// End to end, same topology (issue 2): the whole pipeline on real and analytic meshes,
+// End to end, same topology: the whole pipeline on real and analytic meshes,
 // checked by the map's measured quality (report.h, MapQuality).
 #include "core/quality.h"
 #include "tests/support/meshes.h"
@@ -139,7 +139,7 @@ TEST(EndToEnd, AnchorsFarOffLieOnTipsTheGridCutsShort) {
   std::printf("%d of %zu anchors more than a cell off (%s), %d resolved\n", far, anchors.size(), named.c_str(), resolved);
 }
 
-// The same map with 1 and 2 threads (issue 7): spot -> cow with anchors at 32 cells, and
+// The same map with 1 and 2 threads: spot -> cow with anchors at 32 cells, and
 // sphere -> torus (surgery) at 32 cells. Every image agrees within 1e-6 of the target's
 // diagonal, and the cut has the same faces.
 TEST(EndToEnd, OneAndTwoThreadsAgree) {

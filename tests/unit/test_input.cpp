@@ -1,4 +1,4 @@
-// What comes in (issue 13): input.h's checks and repairs, Options::Validate and the memory
+// What comes in: input.h's checks and repairs, Options::Validate and the memory
 // budget, each asserted on what the pipeline then does: a clean Error naming the problem, or
 // a map measured as sound.
 #include "core/input.h"

@@ -272,22 +272,37 @@ double CappedVolume(Mesh &m) {
   return v;
 }
 
-TEST(SignedDistance, CamelheadOpenMeshHasConsistentInside) {
-  Mesh m;
-  LoadMesh(DataMesh("camelhead.off"), m);
-  const Grid g = Grid::Enclosing(m.bbox, 64);
-  const auto t0 = std::chrono::steady_clock::now();
-  const ScalarField f = SignedDistance(m, g);
-  const double seconds = Seconds(t0);
-  const std::vector<double> w = WindingAtNodes(WindingNumber(m), g);
+// camelhead.off, an open mesh (its neck is a hole), at 64 cells: f, the accurate winding
+// number at every node, computed once for the tests below.
+class CamelheadField : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    LoadMesh(DataMesh("camelhead.off"), m);
+    g = Grid::Enclosing(m.bbox, 64);
+    const auto t0 = std::chrono::steady_clock::now();
+    f = SignedDistance(m, g);
+    seconds = Seconds(t0);
+    w = WindingAtNodes(WindingNumber(m), g);
+  }
+  static Mesh m;
+  static Grid g;
+  static ScalarField f;
+  static double seconds;
+  static std::vector<double> w;
+};
+Mesh CamelheadField::m;
+Grid CamelheadField::g;
+ScalarField CamelheadField::f;
+double CamelheadField::seconds = 0;
+std::vector<double> CamelheadField::w;
 
-  // 1. The negative nodes form one 6-connected component away from the grid's border.
+// The negative nodes form one 6-connected component away from the grid's border.
+TEST_F(CamelheadField, InsideIsOneComponentAwayFromTheBorder) {
   std::vector<char> seen(g.NodeCount(), 0);
-  int components = 0, negatives = 0;
+  int components = 0;
   bool touchesBorder = false;
   g.ForEachNode([&](int i, int j, int k, std::size_t idx) {
     if (f.values[idx] >= 0) return;
-    ++negatives;
     if (seen[idx]) return;
     ++components;
     std::queue<vcg::Point3i> q;
@@ -313,19 +328,24 @@ TEST(SignedDistance, CamelheadOpenMeshHasConsistentInside) {
   });
   EXPECT_EQ(components, 1);
   EXPECT_FALSE(touchesBorder);
-  // The sign is the accurate winding number's (SignedDistance decides most nodes with a
-  // cheaper evaluation, WindingNumber::Inside).
+}
+
+// The sign is the accurate winding number's (SignedDistance decides most nodes with a
+// cheaper evaluation, WindingNumber::Inside).
+TEST_F(CamelheadField, SignIsTheWindingNumbers) {
   int signMismatches = 0;
   for (std::size_t i = 0; i < w.size(); ++i)
     if (f.values[i] != 0 && (f.values[i] < 0) != (w[i] >= 0.5)) ++signMismatches;
   EXPECT_EQ(signMismatches, 0);
+}
 
-  // 2. Far outside (more than 2 cells from the surface) the winding number is small,
-  //    except in front of the open neck: w is harmonic and continuous across the hole, so
-  //    near the opening it takes every value between 0 and 1/2 (measured: all nodes with
-  //    w >= 0.2 lie within 10 cells of the rim, whose radius is ~14 cells). Away from the
-  //    hole (farther from the rim than its radius) w < 0.2 must hold; over all far nodes
-  //    the share is lower (measured 98.3%).
+// Far outside (more than 2 cells from the surface) the winding number is small, except in
+// front of the open neck: w is harmonic and continuous across the hole, so near the
+// opening it takes every value between 0 and 1/2 (measured: all nodes with
+// w >= 0.2 lie within 10 cells of the rim, whose radius is ~14 cells). Away from the
+// hole (farther from the rim than its radius) w < 0.2 must hold; over all far nodes
+// the share is lower (measured 98.3%).
+TEST_F(CamelheadField, FarOutsideTheWindingNumberIsSmall) {
   const std::vector<vcg::Segment3d> rim = BorderEdges(m);
   ASSERT_FALSE(rim.empty());
   Box3 rimBox;
@@ -348,14 +368,20 @@ TEST(SignedDistance, CamelheadOpenMeshHasConsistentInside) {
       awayFromHoleSmall += w[idx] < 0.2;
     }
   });
+  std::printf("[ figures  ] camelhead: far outside (> 2 cells) with w < 0.2: %d/%d = %.2f%%; away from the hole (> %.1f cells from the rim): %d/%d\n",
+              farSmall, far, 100.0 * farSmall / far, rimRadius / g.h, awayFromHoleSmall, awayFromHole);
   EXPECT_GE(awayFromHoleSmall, 0.99 * awayFromHole);
   EXPECT_GE(farSmall, 0.95 * far);
+}
 
-  // 3. The negative volume agrees with the volume of the mesh capped at its hole. Node
-  //    counting misclassifies only nodes within a cell of the surface, and those errors
-  //    largely cancel on a smooth surface; the flat cap and the w = 1/2 surface across the
-  //    neck differ by a sliver. Measured: 0.5%. We accept 3%, which still catches a lost
-  //    part (a wrong sign over the neck or an ear moves it by more).
+// The negative volume agrees with the volume of the mesh capped at its hole. Node
+// counting misclassifies only nodes within a cell of the surface, and those errors
+// largely cancel on a smooth surface; the flat cap and the w = 1/2 surface across the
+// neck differ by a sliver. Measured: 0.5%. We accept 3%, which still catches a lost
+// part (a wrong sign over the neck or an ear moves it by more).
+TEST_F(CamelheadField, NegativeVolumeIsTheCappedMeshVolume) {
+  int negatives = 0;
+  for (double v : f.values) negatives += v < 0;
   const double vNeg = negatives * g.h * g.h * g.h;
   const double vMesh = CappedVolume(m);
   const Box3 gb = g.Bounds();
@@ -364,15 +390,15 @@ TEST(SignedDistance, CamelheadOpenMeshHasConsistentInside) {
               "negative volume %.5g vs capped mesh volume %.5g (diff %+.2f%%)\n",
               m.fn, g.dims.X(), g.dims.Y(), g.dims.Z(), g.h, seconds, negatives, 100.0 * negatives / g.NodeCount(), vNeg, vMesh,
               100 * (vNeg - vMesh) / vMesh);
-  std::printf("[ figures  ] camelhead: far outside (> 2 cells) with w < 0.2: %d/%d = %.2f%%; away from the hole (> %.1f cells from the rim): %d/%d\n",
-              farSmall, far, 100.0 * farSmall / far, rimRadius / g.h, awayFromHoleSmall, awayFromHole);
   EXPECT_GT(vMesh, 0);
   EXPECT_LE(std::abs(vNeg - vMesh), 0.03 * vMesh);
   EXPECT_GT(vNeg, 0.05 * vGrid);  // the inside is not a sliver of the grid
   EXPECT_LT(vNeg, 0.5 * vGrid);   // nor most of it
+}
 
-  // 4. A point deep inside — the centroid of the inside nodes (w > 1/2) farthest from the
-  //    surface — has a negative value, and a winding number near 1.
+// A point deep inside — the centroid of the inside nodes (w > 1/2) farthest from the
+// surface — has a negative value, and a winding number near 1.
+TEST_F(CamelheadField, ADeepPointIsInside) {
   double deepest = 0;
   for (std::size_t i = 0; i < w.size(); ++i)
     if (w[i] > 0.5) deepest = std::max(deepest, std::abs(f.values[i]));

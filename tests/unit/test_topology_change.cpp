@@ -1,4 +1,4 @@
-// Topology change (issue 3): saddle detection (saddle.h) on analytic fields, and the whole
+// Topology change: saddle detection (saddle.h) on analytic fields, and the whole
 // pipeline between surfaces of different genus or number of components, checked by the
 // exact topology of the cut source (DESIGN.md: expected topology after surgery) and by
 // the map's measured quality (report.h, MapQuality).
@@ -489,7 +489,7 @@ TEST(TopologyChange, BoxToGenusOneAndTwo) {
   BoxToTarget(doubleTorus.bbox, doubleTorus, 64, "double torus (genus 2)");
 }
 
-// Parts that grow from nothing (issue 12): a sphere onto three overlapping tori in a row, placed
+// Parts that grow from nothing: a sphere onto three overlapping tori in a row, placed
 // by centre-and-scale so the sphere covers only the middle one. The linear blend grows the
 // outer tori out of nothing, which no tracked point reaches (72.7% coverage, 16 births). The
 // morph grows and withdraws instead (grow_shrink.h): no part is born, the surface grows into

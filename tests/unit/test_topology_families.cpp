@@ -1,4 +1,4 @@
-// Topology change on families of shapes (issue 12), made here (tests/support/shapes.h), at
+// Topology change on families of shapes, made here (tests/support/shapes.h), at
 // grids 48, 64, 96 and 128, with the default placement (centre-and-scale, no anchors: the
 // source does not enclose the target): genus up and down, parts merging and splitting,
 // furniture with thin parts both ways. Every case asserts

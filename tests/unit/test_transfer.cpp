@@ -1,4 +1,4 @@
-// Texture and attribute transfer (issue 6): coordinates pulled from the target (the
+// Texture and attribute transfer: coordinates pulled from the target (the
 // inverse method), one chart per face, the source's own texture on the mapped layer (the
 // forward method), colour and quality through the map, and how much of the target the
 // transfer reaches compared with closest-point transfer.

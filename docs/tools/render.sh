@@ -2,8 +2,8 @@
 # Renders meshes side by side into one PNG with MeshLab 2020.09 itself (Debian's meshlab
 # GUI under xvfb-run), e.g. the Eulerian Surface Map's inputs and outputs.
 #
-# Usage: samples/render.sh OUT.png [options] MESH [[options] MESH ...]
-#        samples/render.sh --readme
+# Usage: docs/tools/render.sh OUT.png [options] MESH [[options] MESH ...]
+#        docs/tools/render.sh --readme
 #   MESH            .ply, .off or .obj (.obj is converted to PLY first: MeshLab 2020.09
 #                   aborts on .obj). Drawn left to right in the given order, each turned
 #                   as the options before it say, scaled to the same height, with even
@@ -35,7 +35,7 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/.." && pwd)
+root=$(cd "$here/../.." && pwd)
 usage() { awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; }
 die() { echo "render.sh: $*" >&2; exit 1; }
 

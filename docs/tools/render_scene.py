@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The two halves of samples/render.sh that are not driving MeshLab (standard library only).
+"""The two halves of docs/tools/render.sh that are not driving MeshLab (standard library only).
 
   render_scene.py prepare WORK [options] MESH [options] MESH ...
       Lays the meshes out side by side and writes WORK/scene.mlp (a MeshLab project: one
@@ -35,6 +35,9 @@ import struct
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "samples"))
+import mesh_io  # noqa: E402  the samples' mesh reader
+
 GAP = 0.25             # space between neighbouring meshes, in mesh heights
 MARGIN = 0.05          # border around the meshes in the picture, share of its height
 VIEW_HALF_HEIGHT = 1.75  # GLArea::viewRatio()
@@ -45,106 +48,9 @@ MAX_SCREEN = 8000
 BACKGROUND = (255, 255, 255)
 SIZE_TOLERANCE = 0.04  # drawn size against the layout's (share)
 
-_PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h",
-              "ushort": "H", "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I",
-              "float": "f", "float32": "f", "double": "d", "float64": "d"}
-
 
 class RenderError(Exception):
     pass
-
-
-# ------------------------------------------------------------------ reading meshes
-
-
-def read_ply(path):
-    """Vertex positions and the texture file names (comment TextureFile ...) of a PLY."""
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"ply":
-            raise RenderError(f"{path} is not a PLY file")
-        fmt, elements, textures = None, [], []
-        while True:
-            line = f.readline()
-            if not line:
-                raise RenderError(f"{path}: PLY header without end_header")
-            text = line.decode("latin-1").strip()
-            t = text.split()
-            if not t:
-                continue
-            if t[0] == "format":
-                fmt = t[1]
-            elif t[0] in ("comment", "obj_info") and len(t) > 2 and t[1].lower() == "texturefile":
-                textures.append(text.split(None, 2)[2].strip())
-            elif t[0] == "element":
-                elements.append((t[1], int(t[2]), []))
-            elif t[0] == "property":
-                if t[1] == "list":
-                    elements[-1][2].append((t[4], _PLY_TYPES[t[2]], _PLY_TYPES[t[3]]))
-                else:
-                    elements[-1][2].append((t[2], None, _PLY_TYPES[t[1]]))
-            elif t[0] == "end_header":
-                break
-        if fmt == "ascii":
-            return _ply_ascii(f, elements), textures
-        if fmt in ("binary_little_endian", "binary_big_endian"):
-            return _ply_binary(f, elements, "<" if fmt == "binary_little_endian" else ">", path), textures
-        raise RenderError(f"{path}: unknown PLY format {fmt}")
-
-
-def _ply_ascii(f, elements):
-    tokens = iter(f.read().decode("latin-1").split())
-    verts = []
-    for name, count, props in elements:
-        for _ in range(count):
-            row = {}
-            for pname, count_type, value_type in props:
-                if count_type:
-                    n = int(next(tokens))
-                    for _ in range(n):
-                        next(tokens)
-                else:
-                    row[pname] = float(next(tokens))
-            if name == "vertex":
-                verts.append((row["x"], row["y"], row["z"]))
-        if name == "vertex":
-            return verts
-    return verts
-
-
-def _ply_binary(f, elements, order, path):
-    data = f.read()
-    at = 0
-    for name, count, props in elements:
-        if all(c is None for _, c, _ in props):  # fixed rows: one struct for the element
-            row = struct.Struct(order + "".join(v for _, _, v in props))
-            if name == "vertex":
-                names = [p for p, _, _ in props]
-                ix, iy, iz = names.index("x"), names.index("y"), names.index("z")
-                return [(r[ix], r[iy], r[iz]) for r in row.iter_unpack(data[at:at + row.size * count])]
-            at += row.size * count
-            continue
-        if name == "vertex":
-            raise RenderError(f"{path}: list properties on vertices are not supported")
-        for _ in range(count):
-            for _, count_type, value_type in props:
-                if count_type:
-                    (n,) = struct.unpack_from(order + count_type, data, at)
-                    at += struct.calcsize(count_type) + n * struct.calcsize(value_type)
-                else:
-                    at += struct.calcsize(value_type)
-    raise RenderError(f"{path}: no vertex element")
-
-
-def read_off(path):
-    """Vertex positions of an OFF file (also COFF, NOFF, CNOFF: positions come first)."""
-    words = []
-    for line in open(path, encoding="latin-1"):
-        words += line.split("#", 1)[0].split()
-    if not words or not words[0].endswith("OFF"):
-        raise RenderError(f"{path} is not an OFF file")
-    nv = int(words[1])
-    per = 3 + (3 if "N" in words[0] else 0) + (4 if "C" in words[0] else 0)
-    return [tuple(float(x) for x in words[4 + per * i:4 + per * i + 3]) for i in range(nv)]
 
 
 # ------------------------------------------------------------------ layout
@@ -280,28 +186,21 @@ def xml_attr(s):
     return s.replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;")
 
 
-def link_mesh(path, folder, here):
+def link_mesh(path, folder):
     """Puts mesh `path` into `folder` (a link; a PLY conversion for .obj, which Debian's
     MeshLab 2020.09 aborts on) and returns that file, the vertices and texture names."""
-    lower = path.lower()
-    if lower.endswith(".obj"):
-        sys.path.insert(0, here)
-        import obj_to_ply
+    mesh = mesh_io.read_mesh(path)
+    if path.lower().endswith(".obj"):
         link = os.path.join(folder, os.path.splitext(os.path.basename(path))[0] + ".ply")
-        obj_to_ply.convert(path, link)
-        return (link,) + read_ply(link)
-    link = os.path.join(folder, os.path.basename(path))
-    os.symlink(os.path.abspath(path), link)
-    if lower.endswith(".ply"):
-        return (link,) + read_ply(path)
-    if lower.endswith(".off"):
-        return link, read_off(path), []
-    raise RenderError(f"{path}: render.sh reads .ply, .off and .obj meshes")
+        mesh_io.write_ply(link, mesh)
+    else:
+        link = os.path.join(folder, os.path.basename(path))
+        os.symlink(os.path.abspath(path), link)
+    return link, mesh.verts, mesh.textures
 
 
 def prepare(work, args):
     opts, meshes = parse(args)
-    here = os.path.dirname(os.path.abspath(__file__))
     for i, m in enumerate(meshes):
         path = m["path"]
         if not os.path.isfile(path):
@@ -309,7 +208,7 @@ def prepare(work, args):
         folder = os.path.join(work, f"m{i}")
         os.makedirs(folder)
         try:
-            m["file"], m["verts"], textures = link_mesh(path, folder, here)
+            m["file"], m["verts"], textures = link_mesh(path, folder)
         except StopIteration:
             raise RenderError(f"cannot read {path}: it ends before the counts in its header are met")
         except (ValueError, IndexError, KeyError, struct.error) as e:

@@ -1,0 +1,55 @@
+// Thread counts per parallel region (threads.h): a ThreadCount sets the team of this
+// thread's regions only, and a run leaves OpenMP's own setting as it found it.
+#include "core/pipeline.h"
+#include "core/threads.h"
+#include "tests/support/meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+using namespace eulermap;
+using namespace eulermap::testing;
+
+namespace {
+
+int TeamSize() {
+  int team = 0;
+#pragma omp parallel num_threads(Threads())
+#pragma omp single
+  team = omp_get_num_threads();
+  return team;
+}
+
+TEST(Threads, ACountSetsTheTeamOfThisThreadsRegionsWhileItLives) {
+  const int all = omp_get_max_threads();
+  {
+    const ThreadCount one(1);
+    EXPECT_EQ(Threads(), 1);
+    EXPECT_EQ(TeamSize(), 1);
+    EXPECT_EQ(omp_get_max_threads(), all) << "OpenMP's own setting is not touched";
+  }
+  EXPECT_EQ(Threads(), all);
+}
+
+TEST(Threads, ZeroLeavesOpenMPsDefault) {
+  const ThreadCount none(0);
+  EXPECT_EQ(Threads(), omp_get_max_threads());
+}
+
+TEST(Threads, AMapLeavesOpenMPsSettingAsItFoundIt) {
+  Mesh source, target;
+  MakeSphere(source, Point3(0, 0, 0), 1, 3);
+  MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.3, 0.9, 0.9), 3);
+  Options options;
+  options.gridResolution = 16;
+  options.steps = 4;
+  options.threads = 1;
+  const int before = omp_get_max_threads();
+  Result result;
+  ComputeMap(source, target, {}, options, result);
+  EXPECT_EQ(result.report.threads, 1);
+  EXPECT_EQ(omp_get_max_threads(), before);
+}
+
+} // namespace
