@@ -1,6 +1,8 @@
 #include "surgery.h"
 
+#include "edge_faces.h"
 #include "refine_stretched.h"
+#include "union_find.h"
 
 #include <vcg/complex/algorithms/hole.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -14,7 +16,6 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -27,16 +28,6 @@ constexpr double kSpreadStretch = 2;  // edges stretched more than this (and lon
 constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
 constexpr double kTakesPartCells = 6;  // the tracked surface takes part in an event this near (+ hole radius)
 constexpr double kCollapsedCells = 5;  // a piece within this many cells (+ hole radius) of a dying part goes with it
-
-std::uint64_t Key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-
-int Find(std::vector<int> &parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
 
 double DistanceToTriangle(const Point3 &p, const Point3 &a, const Point3 &b, const Point3 &c) {
   double distance;
@@ -87,9 +78,8 @@ Surgery::Surgery(const Mesh &source, double radius, double cell, const std::vect
   sourceFaces_ = int(source.face.size());
   for (const Vertex &v : source.vert) sourcePosition_.push_back(v.cP()), trackedAs_.push_back(trackedAs_.size());
   // Faces, the source's own boundary edges, connected components and their areas.
-  std::unordered_map<std::uint64_t, int> edgeUse;
-  std::vector<int> parent(sourceVertices_);
-  std::iota(parent.begin(), parent.end(), 0);
+  EdgeFaces edges;
+  UnionFind parts(sourceVertices_);
   tris_.resize(sourceFaces_);
   for (int f = 0; f < sourceFaces_; ++f) {
     Tri &t = tris_[f];
@@ -97,14 +87,14 @@ Surgery::Surgery(const Mesh &source, double radius, double cell, const std::vect
     t.root = f;
     t.bary = {Point3(1, 0, 0), Point3(0, 1, 0), Point3(0, 0, 1)};
     for (int e = 0; e < 3; ++e) {
-      ++edgeUse[Key(t.v[e], t.v[(e + 1) % 3])];
-      parent[Find(parent, t.v[e])] = Find(parent, t.v[(e + 1) % 3]);
+      edges.Add(t.v[e], t.v[(e + 1) % 3], f);
+      parts.Merge(t.v[e], t.v[(e + 1) % 3]);
     }
   }
   std::vector<int> componentOf(sourceVertices_, -1);
   for (Tri &t : tris_) {
-    for (int e = 0; e < 3; ++e) t.border[e] = edgeUse[Key(t.v[e], t.v[(e + 1) % 3])] == 1;
-    int &c = componentOf[Find(parent, t.v[0])];
+    for (int e = 0; e < 3; ++e) t.border[e] = edges.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1;
+    int &c = componentOf[parts.Find(t.v[0])];
     if (c < 0) c = int(componentArea_.size()), componentArea_.push_back(0);
     t.component = c;
     componentArea_[c] += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
@@ -180,6 +170,14 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
   Refine(position, fNext, tracker);
 }
 
+EdgeFaces Surgery::AliveEdges() const {
+  EdgeFaces edges;
+  for (int n = 0; n < int(tris_.size()); ++n)
+    if (tris_[n].state == kAlive)
+      for (int e = 0; e < 3; ++e) edges.Add(tris_[n].v[e], tris_[n].v[(e + 1) % 3], n);
+  return edges;
+}
+
 double Surgery::NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const {
   double nearest = limit;
   for (const Tri &t : tris_) {
@@ -202,10 +200,7 @@ std::vector<int> Surgery::CollapsedPiece(const Point3 &x, double reach, const st
     if (d < nearest) nearest = d, seed = n;
   }
   if (seed < 0) return {};
-  std::unordered_map<std::uint64_t, std::vector<int>> faces;  // alive faces around each edge
-  for (int n = 0; n < int(tris_.size()); ++n)
-    if (tris_[n].state == kAlive)
-      for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
+  const EdgeFaces faces = AliveEdges();
   std::vector<char> seen(tris_.size(), 0);
   std::vector<int> piece, stack = {seed};
   seen[seed] = 1;
@@ -217,7 +212,7 @@ std::vector<int> Surgery::CollapsedPiece(const Point3 &x, double reach, const st
     for (int c = 0; c < 3; ++c)
       if (vcg::Distance(position[t.v[c]], x) > reach) return {};  // reaches beyond: not collapsed
     for (int e = 0; e < 3; ++e)
-      for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])])
+      for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3]))
         if (!seen[m]) seen[m] = 1, stack.push_back(m);
   }
   return piece;
@@ -282,7 +277,7 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
   auto crosses = [&](const Tri &t) { return side(t.v[0]) != side(t.v[1]) || side(t.v[1]) != side(t.v[2]); };
   int seed = -1;
   double nearest = reach;
-  std::unordered_map<std::uint64_t, std::vector<int>> faces;  // crossing faces near x, by edge
+  EdgeFaces faces;  // crossing faces near x, by edge
   for (int n = 0; n < int(tris_.size()); ++n) {
     const Tri &t = tris_[n];
     if (t.state != kAlive || !crosses(t)) continue;
@@ -292,7 +287,7 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
     if (dist > 2 * reach) continue;
     if (dist < nearest) nearest = dist, seed = n;
     for (int e = 0; e < 3; ++e)
-      if (side(t.v[e]) != side(t.v[(e + 1) % 3])) faces[Key(t.v[e], t.v[(e + 1) % 3])].push_back(n);
+      if (side(t.v[e]) != side(t.v[(e + 1) % 3])) faces.Add(t.v[e], t.v[(e + 1) % 3], n);
   }
   if (seed < 0) return cut;
   std::vector<char> seen(tris_.size(), 0);
@@ -303,12 +298,9 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
     stack.pop_back();
     cut.push_back(n);
     const Tri &t = tris_[n];
-    for (int e = 0; e < 3; ++e) {
-      auto it = faces.find(Key(t.v[e], t.v[(e + 1) % 3]));
-      if (it == faces.end()) continue;
-      for (int m : it->second)
+    for (int e = 0; e < 3; ++e)
+      for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3]))
         if (!seen[m]) seen[m] = 1, stack.push_back(m);
-    }
   }
   return cut;
 }
@@ -322,13 +314,8 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
       if (vcg::Distance(c.second, centre) < best) best = vcg::Distance(c.second, centre), t.state = c.first;
   };
   for (int round = 0; round < 1000; ++round) {
-    std::unordered_map<std::uint64_t, std::vector<int>> faces;  // alive faces around each edge
-    for (int n = 0; n < int(tris_.size()); ++n)
-      if (tris_[n].state == kAlive)
-        for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
-    auto rim = [&](const Tri &t, int e) {
-      return !t.border[e] && faces[Key(t.v[e], t.v[(e + 1) % 3])].size() == 1;
-    };
+    const EdgeFaces faces = AliveEdges();
+    auto rim = [&](const Tri &t, int e) { return !t.border[e] && faces.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1; };
     bool changed = false;
     // Ears: two or more edges on a rim.
     for (Tri &t : tris_)
@@ -346,21 +333,20 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
           auto it = around.find(tris_[n].v[c]);
           if (it != around.end()) it->second.push_back(n);
         }
-    std::vector<int> parent(tris_.size());
-    std::iota(parent.begin(), parent.end(), 0);
+    UnionFind fans(int(tris_.size()));
     for (auto &[v, fan] : around) {
       for (int n : fan) {
         const Tri &t = tris_[n];
         for (int e = 0; e < 3; ++e)
           if (t.v[e] == v || t.v[(e + 1) % 3] == v)
-            for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])]) parent[Find(parent, n)] = Find(parent, m);
+            for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3])) fans.Merge(n, m);
       }
       std::unordered_map<int, int> size;
-      for (int n : fan) ++size[Find(parent, n)];
+      for (int n : fan) ++size[fans.Find(n)];
       if (size.size() < 2) continue;
       const int largest = std::max_element(size.begin(), size.end(), [](auto &a, auto &b) { return a.second < b.second; })->first;
       for (int n : fan)
-        if (tris_[n].state == kAlive && Find(parent, n) != largest) remove(tris_[n]), changed = true;
+        if (tris_[n].state == kAlive && fans.Find(n) != largest) remove(tris_[n]), changed = true;
     }
     if (changed) continue;
     // Islands: pieces with a rim and less than kIslandShare of their component's area.
@@ -380,7 +366,7 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
         area += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
         for (int e = 0; e < 3; ++e) {
           hasRim = hasRim || rim(t, e);
-          for (int m : faces[Key(t.v[e], t.v[(e + 1) % 3])])
+          for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3]))
             if (piece[m] < 0) piece[m] = seed, stack.push_back(m);
         }
       }
@@ -403,10 +389,6 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
   const double limit = kSplitCells * cell_;
   std::vector<Point3> born;  // tracked positions of the points added at this step
   for (int pass = 0; pass < 4; ++pass) {
-    std::unordered_map<std::uint64_t, std::vector<int>> faces;
-    for (int n = 0; n < int(tris_.size()); ++n)
-      if (tris_[n].state == kAlive)
-        for (int e = 0; e < 3; ++e) faces[Key(tris_[n].v[e], tris_[n].v[(e + 1) % 3])].push_back(n);
     auto longEdge = [&](const Tri &t, int e) { return vcg::Distance(position[t.v[e]], position[t.v[(e + 1) % 3]]) > limit; };
     // Torn: long, and longer than kSpreadStretch times on the source (a rim opening, a
     // surface growing into a part of the target).
@@ -419,7 +401,7 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
     for (const Tri &t : tris_)
       if (t.state == kAlive)
         for (int e = 0; e < 3; ++e)
-          if (t.refinable ? longEdge(t, e) : torn(t, e)) midpoint[Key(t.v[e], t.v[(e + 1) % 3])] = -1;
+          if (t.refinable ? longEdge(t, e) : torn(t, e)) midpoint[EdgeFaces::Key(t.v[e], t.v[(e + 1) % 3])] = -1;
     if (midpoint.empty() || PointsAdded() + int(midpoint.size()) > kAddedPerVertex * sourceVertices_) break;  // the budget
     for (auto &[key, id] : midpoint) {
       const int a = int(key >> 32), b = int(key & 0xffffffffu);
@@ -438,7 +420,7 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
       const Tri parent = tris_[n];
       int mid[3], marked = 0;
       for (int e = 0; e < 3; ++e) {
-        auto it = midpoint.find(Key(parent.v[e], parent.v[(e + 1) % 3]));
+        auto it = midpoint.find(EdgeFaces::Key(parent.v[e], parent.v[(e + 1) % 3]));
         mid[e] = it == midpoint.end() ? -1 : it->second;
         marked += mid[e] >= 0;
       }
@@ -511,14 +493,11 @@ std::vector<Point3> Surgery::Build(Mesh &source, const std::vector<Point3> &trac
       ++outcomes[t.state].facesRemoved;
       removed.push_back({(sourcePosition_[t.v[0]] + sourcePosition_[t.v[1]] + sourcePosition_[t.v[2]]) / 3, t.state});
     }
-  std::unordered_map<std::uint64_t, int> alive;
-  for (const Tri &t : tris_)
-    if (t.state == kAlive)
-      for (int e = 0; e < 3; ++e) ++alive[Key(t.v[e], t.v[(e + 1) % 3])];
+  const EdgeFaces alive = AliveEdges();
   for (const Tri &t : tris_)
     if (t.state == kAlive)
       for (int e = 0; e < 3; ++e) {
-        if (t.border[e] || alive[Key(t.v[e], t.v[(e + 1) % 3])] != 1 || removed.empty()) continue;
+        if (t.border[e] || alive.Around(t.v[e], t.v[(e + 1) % 3]).size() != 1 || removed.empty()) continue;
         const Point3 &a = sourcePosition_[t.v[e]], &b = sourcePosition_[t.v[(e + 1) % 3]];
         int hole = 0;
         double best = 1e300;

@@ -53,6 +53,7 @@
 #pragma once
 
 #include "cut_axis.h"
+#include "edge_faces.h"
 #include "report.h"
 #include "tracker.h"
 
@@ -111,6 +112,7 @@ class Surgery {
   static constexpr int kAlive = -1, kSplit = -2;
 
   std::vector<Point3> Positions(const std::vector<Point3> &tracked) const;
+  EdgeFaces AliveEdges() const;  // the alive faces around each edge
   // Distance from x to the nearest alive tracked triangle (at most `limit`, returned when none is nearer).
   double NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const;
   // The connected piece of alive faces nearest to x if all of it lies within reach of x, else none.
