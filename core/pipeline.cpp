@@ -78,6 +78,7 @@ constexpr double kLowCoverage = 0.9;
 constexpr double kLowOnSurface = 0.9;
 constexpr double kFullCoverage = 0.97;  // below it, parts born from nothing are named
 constexpr double kFoldedShare = 0.01;  // flipped area after untangling above it: the map folds
+constexpr int kRefineRounds = 3;  // untangle-refine rounds after the first untangling
 constexpr double kStretchedShare = 0.05;  // a mapped edge longer than this share of the target's diagonal
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
@@ -458,18 +459,21 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   const ClosestPoint targetIndex(m.target);
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
   stage(0.93, "untangling the map");
-  // Untangling spreads folds and can stretch edges; refine_stretched.h splits those, and a
-  // second untangling settles the faces the splits fold (ring1 -> ring2 at 64 cells: 1.78%
-  // flipped after one untangling and the splits, 0.37% after the second).
+  // Untangling spreads folds and can stretch edges; refine_stretched.h splits those, and
+  // untangling again settles the faces the splits fold, kRefineRounds times at most
+  // (ring1 -> ring2 at 64 cells: 1.78% flipped after one untangling and the splits, 0.37%
+  // after the second).
   auto untangle = [&] {
     if (!options.untangle) return;
     rep.untangledVertices += Untangle(mapped, targetIndex);
     for (std::size_t n = 0; n < mapped.vert.size(); ++n) targetPosition[n] = mapped.vert[n].cP();
   };
   untangle();
-  rep.stretchedSplit = RefineStretched(cut, targetIndex, kSplitCells * grid.h / m.place.scale);
-  if (rep.stretchedSplit > 0) {  // the mapped source follows the cut's new vertices
-    mapped.Clear();
+  for (int round = 0; round < kRefineRounds; ++round) {
+    const int added = RefineStretched(cut, targetIndex, kSplitCells * grid.h / m.place.scale);
+    if (added == 0) break;
+    rep.stretchedSplit += added;
+    mapped.Clear();  // the mapped source follows the cut's new vertices
     CopyMesh(mapped, cut);
     for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
     untangle();
