@@ -92,7 +92,7 @@ const Open kOpen[] = {
     {"sphere", "ring3", 48, kCoverage | kLongest},
     {"sphere", "ring3", 64, kFlipped | kLongest},
     {"sphere", "ring3", 96, kLongest},
-    {"sphere", "ring3", 128, kCut | kLongest},
+    {"sphere", "ring3", 128, kCut | kFlipped | kLongest},
     {"sphere", "ring4", 48, kCut | kCoverage | kFlipped | kLongest},
     {"sphere", "ring4", 64, kCut | kFlipped | kLongest},
     {"sphere", "ring4", 96, kFlipped | kLongest},
