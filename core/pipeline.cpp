@@ -459,7 +459,8 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   const ClosestPoint targetIndex(m.target);
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
   stage(0.93, "untangling the map");
-  // Untangling spreads folds and can stretch edges; refine_stretched.h splits those, and
+  // Untangling spreads folds and can stretch edges; refine_stretched.h splits those (where
+  // surgery splits them too: a map that cuts nothing keeps the source's faces), and
   // untangling again settles the faces the splits fold, kRefineRounds times at most
   // (ring1 -> ring2 at 64 cells: 1.78% flipped after one untangling and the splits, 0.37%
   // after the second).
@@ -469,7 +470,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
     for (std::size_t n = 0; n < mapped.vert.size(); ++n) targetPosition[n] = mapped.vert[n].cP();
   };
   untangle();
-  for (int round = 0; round < kRefineRounds; ++round) {
+  for (int round = 0; round < kRefineRounds && surgery.SplitsStretched(); ++round) {
     const int added = RefineStretched(cut, targetIndex, kSplitCells * grid.h / m.place.scale);
     if (added == 0) break;
     rep.stretchedSplit += added;

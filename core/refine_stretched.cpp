@@ -1,6 +1,7 @@
 #include "refine_stretched.h"
 
-#include <vcg/complex/algorithms/clean.h>
+#include "edge_faces.h"
+
 #include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
@@ -45,16 +46,21 @@ struct SplitPoint {
 } // namespace
 
 int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit) {
+  // RefineE walks manifold edges. (vcglib 2020.09's CountNonManifoldEdgeFF takes a face
+  // bit flag it never gives back: called once per map it runs out of bits.)
+  const EdgeFaces edges(cut);
+  for (const Face &f : cut.face)
+    for (int e = 0; e < 3; ++e)
+      if (edges.Around(int(vcg::tri::Index(cut, f.cV(e))), int(vcg::tri::Index(cut, f.cV((e + 1) % 3)))).size() > 2)
+        return 0;
   vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);
-  if (vcg::tri::Clean<Mesh>::CountNonManifoldEdgeFF(cut) > 0) return 0;  // RefineE walks manifold edges
   Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   const int before = cut.vn;
   // Each pass halves the stretched edges; the budget stops a tear that the guard lets by.
   for (int pass = 0; pass < 8 && cut.vn < 2 * before; ++pass) {
     Stretched stretched{image, target, limit};
     SplitPoint split{cut, image, target};
-    if (!vcg::tri::RefineE(cut, split, stretched)) break;
-    vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);
+    if (!vcg::tri::RefineE(cut, split, stretched)) break;  // (RefineE updates FF adjacency)
   }
   return cut.vn - before;
 }

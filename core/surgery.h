@@ -83,6 +83,9 @@ class Surgery {
   void Step(int k, const std::vector<Saddle> &saddles, const ScalarField &fNext, Tracker &tracker);
   // Whether step k has events to act on (the pipeline looks for V's saddles only then).
   bool Acts(int k) const;
+  // Whether stretched edges are split (step 4): once a cut has changed the surface, or from
+  // the start when asked. A map that cuts nothing keeps the source's faces.
+  bool SplitsStretched() const { return refineStretched_; }
 
   // One per event of the morph, in order (faces removed and rim length are filled by Build).
   const std::vector<EventSurgery> &Outcomes() const { return outcomes_; }

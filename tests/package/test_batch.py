@@ -43,7 +43,7 @@ from test_package import point_cloud  # noqa: E402
 BIN = os.path.dirname(sys.executable)
 PARAMS = ["--grid", "32", "--steps", "16"]
 SINGLE_ENV = dict(os.environ, OMP_NUM_THREADS="1")  # as each LocalCluster worker runs its pair
-TIMES = ("time_", "wall_s")
+TIMES = ("time_", "wall_s", "peak_memory_mib")  # what differs between two runs of one map
 
 
 def write_ply(path, verts, faces):

@@ -42,7 +42,8 @@ BIN = os.path.dirname(sys.executable)
 
 
 def without_times(figures):
-    return {k: v for k, v in figures.items() if not k.startswith("time_") and k != "wall_s"}
+    """The figures that two runs of one map share: not its times, not its process's peak memory."""
+    return {k: v for k, v in figures.items() if not k.startswith("time_") and k not in ("wall_s", "peak_memory_mib")}
 
 
 def point_cloud(path):
