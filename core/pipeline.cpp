@@ -528,7 +528,9 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     if (!std::isfinite(samples[n].X() + samples[n].Y() + samples[n].Z()))
       throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
   const ThreadCount threads(options.threads);
+  double reached = 0;  // the share reported last: progress never goes back
   const Stage stage = [&](double share, const std::string &name) {
+    reached = share;
     if (progress && !progress(share, name)) throw Error("cancelled");
   };
   Report &rep = result.report;
@@ -570,11 +572,18 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
                 : std::vector<Morph::Blend>{Morph::Blend::Linear, Morph::Blend::GrowShrink};
   const Report base = rep;
   for (std::size_t n = 0; n < order.size(); ++n) {
+    // The second morph's stages take the rest of the bar after the first's.
+    const double from = reached;
+    const Stage rest = [&, from](double share, const std::string &name) {
+      stage(from + (1 - from) * share, "second morph: " + name);
+    };
+    const Stage &attemptStage = n == 0 ? stage : rest;
     t0 = Clock::now();
     const auto morph = order[n] == Morph::Blend::Linear ? std::move(linear)
                                                         : std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b, order[n]);
     const double setup = Seconds(t0);
-    MorphEvents events = order[n] == Morph::Blend::Linear ? std::move(linearEvents) : FindEvents(*morph, m, grid, options, stage);
+    MorphEvents events =
+        order[n] == Morph::Blend::Linear ? std::move(linearEvents) : FindEvents(*morph, m, grid, options, attemptStage);
     if (n == 0) {
       Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, result, stage);
       result.report.times.interp += setup;
@@ -582,7 +591,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
       continue;
     }
     Result other;
-    Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, other, stage);
+    Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, other, attemptStage);
     other.report.times.interp += setup;
     const std::string first = Summary(result.report), second = Summary(other.report);
     const bool keepOther = Better(other.report, result.report);
