@@ -453,9 +453,12 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   // The mapped source keeps the source's own texture coordinates and textures (the
   // forward method): it is copied before the cut takes the target's.
   Mesh &mapped = result.mapped;
-  mapped.Clear();
-  CopyMesh(mapped, cut);
-  for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
+  auto mapCut = [&] {  // mapped = cut at the images (again after refine_stretched.h adds vertices)
+    mapped.Clear();
+    CopyMesh(mapped, cut);
+    for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
+  };
+  mapCut();
   const ClosestPoint targetIndex(m.target);
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
   stage(0.93, "untangling the map");
@@ -474,9 +477,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
     const int added = RefineStretched(cut, targetIndex, kSplitCells * grid.h / m.place.scale);
     if (added == 0) break;
     rep.stretchedSplit += added;
-    mapped.Clear();  // the mapped source follows the cut's new vertices
-    CopyMesh(mapped, cut);
-    for (std::size_t n = 0; n < mapped.vert.size(); ++n) mapped.vert[n].P() = targetPosition[n];
+    mapCut();
     untangle();
   }
   vcg::tri::UpdateBounding<Mesh>::Box(mapped);
@@ -504,8 +505,9 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
 
   rep.quality.coverage = Coverage(m.target, mapped, 0.02 * m.target.bbox.Diag(), &rep.quality.uncoveredParts);
   rep.quality.flippedAreaShare = FlippedAreaShare(mapped, targetIndex);
-  rep.quality.longestEdgeCells = LongestEdge(mapped) * m.place.scale / grid.h;
-  rep.quality.longestEdgeShare = LongestEdge(mapped) / m.target.bbox.Diag();
+  const double longest = LongestEdge(mapped);
+  rep.quality.longestEdgeCells = longest * m.place.scale / grid.h;
+  rep.quality.longestEdgeShare = longest / m.target.bbox.Diag();
   const Topology topo = MeasureTopology(cut);
   rep.cutComponents = topo.components;
   rep.cutBoundaryLoops = topo.boundaryLoops;
