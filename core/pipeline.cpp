@@ -460,6 +460,10 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   };
   mapCut();
   const ClosestPoint targetIndex(m.target);
+  const double splitLength = kSplitCells * grid.h / m.place.scale;  // refine_stretched.h, target units
+  // Where a hole opened wider than surgery cut it, the faces left across it go (where
+  // surgery cuts; a map that cuts nothing keeps the source's faces).
+  if (surgery.SplitsStretched() && (rep.tearsOpened = OpenTears(cut, targetIndex, splitLength)) > 0) mapCut();
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
   stage(0.93, "untangling the map");
   // Untangling spreads folds and can stretch edges; refine_stretched.h splits those (where
@@ -474,7 +478,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   };
   untangle();
   for (int round = 0; round < kRefineRounds && surgery.SplitsStretched(); ++round) {
-    const int added = RefineStretched(cut, targetIndex, kSplitCells * grid.h / m.place.scale);
+    const int added = RefineStretched(cut, targetIndex, splitLength);
     if (added == 0) break;
     rep.stretchedSplit += added;
     mapCut();

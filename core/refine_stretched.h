@@ -1,5 +1,6 @@
-// eulermap::RefineStretched — the mapped source refined where the map stretches an edge
-// (ours, not the paper's).
+// eulermap::RefineStretched and OpenTears — the mapped source refined where the map stretches
+// an edge along the target, and opened where it tears across a gap beside a cut (ours, not
+// the paper's).
 //
 // Surgery splits the tracked edges that stretch while the points move (surgery.h, step 4);
 // untangling (untangle.h) then spreads folded places over the target once the points have
@@ -10,11 +11,11 @@
 // vertex data interpolated), and the new vertex's image is the target's point nearest the
 // midpoint of its ends' images: the map is linear along the edge at the scale it was
 // tracked at, and the image lies on the target instead of on a chord across it.
-// An edge is split only where its chord follows the target: the nearest target point to
-// the chord's midpoint lies within kChordSag of the edge's mapped length, and the target
-// faces the same way at both ends and there. A chord across a gap (the ends mapped onto
-// two sheets that face each other: a tear in the map) is left as it is, so the longest-edge
-// figure still shows it.
+// An edge is split only where its chord follows the target: it does not cross a gap
+// (AcrossGap), and the target does not face opposite ways at its ends and its midpoint's
+// nearest point (the two sides of a thin part). A convex corner is split (its chord runs
+// inside); a chord across a gap (the ends mapped onto two sides of an opening: a tear in
+// the map) is left as it is, so the longest-edge figure still shows it.
 //   in/out: cut (vertex positions on the source, per-vertex attribute "TargetPosition"
 //           = the images, on the target's own frame; no deleted elements)
 //   in:     target (the mesh the images lie on), limit (mapped length above which an edge
@@ -30,5 +31,23 @@ constexpr double kSplitCells = 2;  // an edge longer than this many grid cells o
 constexpr double kChordSag = 0.25;  // a chord this far from the target (per unit of its length) crosses a gap
 
 int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit);
+
+// Whether the chord between images a and b crosses a gap: its midpoint lies outside the
+// target (on the side its nearest face's normal points to), more than kChordSag of the
+// chord's length away.
+bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target);
+
+// A tear: a face with an edge mapped longer than the limit across a gap (AcrossGap). Where the
+// faces of a tear reach a rim of the cut, the hole cut there opened wider along the morph
+// than the faces surgery removed (a hole that opens late: sphere -> ring3 at 64 cells, the
+// middle hole at step 34 of 40, 34 faces left across it, longest mapped edge 14% of the
+// target's diagonal): those faces are removed, each connected piece of them only if the
+// cut's components, boundary loops and Euler characteristic stay as they were (the hole
+// grows; no new hole, no piece cut off). Tears away from every rim stay (the longest-edge
+// figure shows them).
+//   in/out: cut (as for RefineStretched), compacted when faces go
+//   in:     target, limit (as for RefineStretched)
+//   returns the number of faces removed
+int OpenTears(Mesh &cut, const ClosestPoint &target, double limit);
 
 } // namespace eulermap

@@ -47,6 +47,8 @@ const std::vector<Figure> &FigureTable() {
       {"points_added", U::Count, L::None, "points added", false, [](const Report &r) { return double(r.pointsAdded); }},
       {"stretched_split", U::Count, L::None, "points added where edges stretched", false,
        [](const Report &r) { return double(r.stretchedSplit); }},
+      {"tears_opened", U::Count, L::None, "faces removed where the map tore beside a cut", false,
+       [](const Report &r) { return double(r.tearsOpened); }},
       {"time_sdf_s", U::Seconds, L::Times, "SDF", true, [](const Report &r) { return r.times.sdf; }},
       {"time_int_s", U::Seconds, L::Times, "INT", true, [](const Report &r) { return r.times.interp; }},
       {"time_vf_s", U::Seconds, L::Times, "VF", true, [](const Report &r) { return r.times.velocity; }},
@@ -203,8 +205,8 @@ std::string Report::ToText() const {
     o << "\n";
   }
   o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target, %d added where edges "
-              "stretched\n",
-              100 * quality.flippedBeforeUntangling, untangledVertices, stretchedSplit);
+              "stretched, %d faces removed where the map tore beside a cut\n",
+              100 * quality.flippedBeforeUntangling, untangledVertices, stretchedSplit, tearsOpened);
   if (!texture.empty()) o << Format("texture: %s\n", texture.c_str());
   if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
   for (const std::string &w : warnings) o << "warning: " << w << "\n";

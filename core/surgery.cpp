@@ -24,6 +24,7 @@ namespace eulermap {
 namespace {
 
 constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
+constexpr double kOffLevelCells = 0.25;  // a tracked point this far off f = 0 has lost its level set
 constexpr double kSpreadStretch = 2;  // edges stretched more than this (and long) are split anywhere
 constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
 constexpr double kTakesPartCells = 6;  // the tracked surface takes part in an event this near (+ hole radius)
@@ -396,12 +397,28 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
       const int a = t.v[e], b = t.v[(e + 1) % 3];
       return longEdge(t, e) && vcg::Distance(position[a], position[b]) > kSpreadStretch * vcg::Distance(sourcePosition_[a], sourcePosition_[b]);
     };
-    // Long edges of rim faces, and torn edges anywhere, get a midpoint.
+    // Long edges of rim faces, and torn edges anywhere, get a midpoint, unless an end has
+    // lost its level set: the part of the surface it followed vanished without a cut (a
+    // handle lost that the plan leaves uncut, a membrane gone at once), so the pull-back
+    // leaves it off f = 0 and every point put between lands on the other end (ring1 ->
+    // ring2 at 64 cells: 200 such points, and 30000 points added after them in 6 steps
+    // until the budget ran out).
+    auto onLevel = [&](int p) { return std::abs(fNext.Value(position[p])) <= kOffLevelCells * cell_; };
+    // Nor where the chord runs outside, more than kChordSag of its length off the surface:
+    // the ends lie on two rims of an opening that the cut did not reach (sphere -> ring3 at 64
+    // cells: the middle hole opens 6 steps before the end, and 30000 points landed on one
+    // end or the other of chords across it).
+    auto alongSurface = [&](int a, int b) {
+      return fNext.Value((position[a] + position[b]) / 2) <= kChordSag * vcg::Distance(position[a], position[b]);
+    };
     std::unordered_map<std::uint64_t, int> midpoint;
     for (const Tri &t : tris_)
       if (t.state == kAlive)
-        for (int e = 0; e < 3; ++e)
-          if (t.refinable ? longEdge(t, e) : torn(t, e)) midpoint[EdgeFaces::Key(t.v[e], t.v[(e + 1) % 3])] = -1;
+        for (int e = 0; e < 3; ++e) {
+          const int a = t.v[e], b = t.v[(e + 1) % 3];
+          if ((t.refinable ? longEdge(t, e) : torn(t, e)) && onLevel(a) && onLevel(b) && alongSurface(a, b))
+            midpoint[EdgeFaces::Key(a, b)] = -1;
+        }
     if (midpoint.empty() || PointsAdded() + int(midpoint.size()) > kAddedPerVertex * sourceVertices_) break;  // the budget
     for (auto &[key, id] : midpoint) {
       const int a = int(key >> 32), b = int(key & 0xffffffffu);

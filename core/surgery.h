@@ -46,7 +46,9 @@
 //      midpoint of the edge's tracked ends pulled back onto f(., t_k+1) = 0 (the ends are
 //      both on the same side of the parting by then), and from there it has its own
 //      trajectory through the same fields. At most kAddedPerVertex points are added per
-//      vertex of the source.
+//      vertex of the source. Not split: an edge with an end off f(., t_k+1) = 0 (the part of
+//      the surface it followed vanished without a cut) or whose chord runs outside the
+//      surface (its ends on two rims of an opening): a point put there lands on an end.
 // The map stays Eulerian: cutting never moves a point, and every vertex of the cut source
 // is mapped by its own trajectory. The vertices that stay keep the images of the single
 // tracking pass. With no event cut, the cut source is the source.

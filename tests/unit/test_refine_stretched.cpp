@@ -1,6 +1,8 @@
 // The mapped source refined where the map stretches an edge (refine_stretched.h): edges
-// whose images run along the target are split onto it; a chord across a gap (a tear) is not.
+// whose images run along the target are split onto it; a chord across a gap (a tear) is not,
+// and a tear that reaches a rim is opened unless that changes the cut's topology.
 #include "core/refine_stretched.h"
+#include "core/topology.h"
 #include "tests/support/meshes.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +71,96 @@ TEST(RefineStretched, AChordAcrossAGapIsNotSplit) {
   for (int n = 4; n < cut.vn; ++n) EXPECT_NEAR(std::abs(image[n].Z() - 0.5), 0.5, 1e-12);
   // the tear keeps its length: c-a, 3.2 long
   EXPECT_GT(LongestImage(cut, image), 3.1);
+}
+
+TEST(RefineStretched, AnEdgeOverAConvexCornerIsSplit) {
+  // One face mapped over the edge of a box (top face z = 4 to side face x = 4): its chords
+  // run inside the box, 1 below its faces, and the target's normals there are at right angles.
+  Mesh cut, target;
+  MakeBox(target, Box3(Point3(0, 0, 0), Point3(4, 4, 4)), 4);
+  vcg::tri::Allocator<Mesh>::AddVertices(cut, 3);
+  cut.vert[0].P() = Point3(0, 0, 0), cut.vert[1].P() = Point3(1, 0, 0), cut.vert[2].P() = Point3(0, 0.2, 0);
+  vcg::tri::Allocator<Mesh>::AddFace(cut, &cut.vert[0], &cut.vert[1], &cut.vert[2]);
+  Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
+  image[0] = Point3(2, 2, 4), image[1] = Point3(4, 2, 2), image[2] = Point3(2, 2.5, 4);
+  ClosestPoint onTarget(target);
+  EXPECT_FALSE(AcrossGap(image[0], image[1], onTarget));
+  EXPECT_GT(RefineStretched(cut, onTarget, 2.0), 0);
+  for (int n = 3; n < cut.vn; ++n) EXPECT_LT(onTarget.Query(image[n]).distance, 1e-9);
+}
+
+// A flat grid of unit squares, (columns + 1) x (rows + 1) vertices, vertex (i, j) = i + j (columns + 1).
+void MakeGrid(Mesh &m, int columns, int rows) {
+  auto v = vcg::tri::Allocator<Mesh>::AddVertices(m, (columns + 1) * (rows + 1));
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= columns; ++i) v[i + j * (columns + 1)].P() = Point3(i, j, 0);
+  auto at = [&](int i, int j) { return &m.vert[i + j * (columns + 1)]; };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      vcg::tri::Allocator<Mesh>::AddFace(m, at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      vcg::tri::Allocator<Mesh>::AddFace(m, at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+}
+
+// The quad (a, b, c, d) as two faces facing (b - a) ^ (c - a).
+void AddQuad(Mesh &m, const Point3 &a, const Point3 &b, const Point3 &c, const Point3 &d) {
+  auto v = vcg::tri::Allocator<Mesh>::AddVertices(m, 4);
+  v[0].P() = a, v[1].P() = b, v[2].P() = c, v[3].P() = d;
+  vcg::tri::Allocator<Mesh>::AddFace(m, &v[0], &v[1], &v[2]);
+  vcg::tri::Allocator<Mesh>::AddFace(m, &v[0], &v[2], &v[3]);
+}
+
+// Source: a 4 x 2 grid. Target: the ground z = 0 (facing up) with a trench 5 deep between
+// x = 1 and x = 3, along y from 0 to `trench`; where the trench ends (trench 1), the ground
+// bridges it. The grid's bottom row maps onto the ground with x -> 0, 0.5, 1, 3, 4, the
+// rows above onto the bridge as they are (or, without one, like the bottom row): the faces
+// over the trench are a tear.
+struct GapCase {
+  Mesh cut, target;
+  explicit GapCase(double trench) {
+    MakeGrid(cut, 4, 2);
+    Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
+    const double gapX[5] = {0, 0.5, 1, 3, 4};
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 4; ++i) image[i + 5 * j] = Point3(j >= trench ? i : gapX[i], j, 0);
+    auto ground = [&](double x0, double y0, double x1, double y1, double z) {
+      AddQuad(target, Point3(x0, y0, z), Point3(x1, y0, z), Point3(x1, y1, z), Point3(x0, y1, z));
+    };
+    ground(0, 0, 1, 2, 0), ground(3, 0, 4, 2, 0), ground(1, 0, 3, trench, -5);
+    if (trench < 2) ground(1, trench, 3, 2, 0);
+    AddQuad(target, Point3(1, 0, -5), Point3(1, trench, -5), Point3(1, trench, 0), Point3(1, 0, 0));  // facing +x
+    AddQuad(target, Point3(3, 0, 0), Point3(3, trench, 0), Point3(3, trench, -5), Point3(3, 0, -5));  // facing -x
+    if (trench < 2)  // the trench's end, facing -y
+      AddQuad(target, Point3(1, trench, -5), Point3(3, trench, -5), Point3(3, trench, 0), Point3(1, trench, 0));
+  }
+};
+
+TEST(OpenTears, ATearReachingARimIsOpened) {
+  GapCase c(1);
+  const Topology before = MeasureTopology(c.cut);
+  ClosestPoint onTarget(c.target);
+  // Only the bottom edge over the trench (2 long, its midpoint 1 above it) is a tear: the
+  // face (2,0) (3,0) (3,1) goes; the hole (here the outer rim) grows, nothing else changes.
+  EXPECT_EQ(OpenTears(c.cut, onTarget, 1.5), 1);
+  EXPECT_EQ(c.cut.fn, 15);
+  const Topology after = MeasureTopology(c.cut);
+  EXPECT_EQ(after.components, before.components);
+  EXPECT_EQ(after.boundaryLoops, before.boundaryLoops);
+  EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
+  Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(c.cut, "TargetPosition");
+  for (Face &f : c.cut.face)  // no tear is left
+    for (int e = 0; e < 3; ++e) {
+      const double length = vcg::Distance(image[f.V(e)], image[f.V1(e)]);
+      EXPECT_TRUE(length <= 1.5 || !AcrossGap(image[f.V(e)], image[f.V1(e)], onTarget));
+    }
+}
+
+TEST(OpenTears, ATearThatWouldCutOffAPieceStays) {
+  GapCase c(2);  // the whole column over the trench tears, from the bottom rim to the top
+  ClosestPoint onTarget(c.target);
+  EXPECT_EQ(OpenTears(c.cut, onTarget, 1.5), 0);
+  EXPECT_EQ(c.cut.fn, 16);
+  EXPECT_EQ(MeasureTopology(c.cut).components, 1);
 }
 
 } // namespace

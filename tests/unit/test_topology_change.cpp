@@ -286,6 +286,33 @@ TEST(Surgery, PinchingNeckLosesABand) {
   EXPECT_EQ(t.eulerCharacteristic, 0);
 }
 
+// Stretched edges are split only where both ends still follow f = 0: a tracked point left
+// off its level set (the part of the surface it followed vanished without a cut) is no place
+// to refine, since every point put beside it is pulled back onto the far end.
+TEST(Surgery, StretchedEdgesAreSplitOnlyWhereTheirEndsKeepTheirLevel) {
+  const Grid g = Grid::Enclosing(Box3(Point3(-1, -1, -1), Point3(1, 1, 1)), 40);
+  Mesh source;
+  MakeSphere(source, Point3(0, 0, 0), 0.1, 2);
+  std::vector<Point3> points;
+  for (const Vertex &v : source.vert) points.push_back(v.cP() * 6.0);  // stretched 6 times, edges over 2 cells
+  for (const double radius : {0.6, 0.75}) {  // f = 0 through the points; 3 cells beyond them
+    ScalarField f(g, 0.0);
+    for (int k = 0; k < g.dims.Z(); ++k)
+      for (int j = 0; j < g.dims.Y(); ++j)
+        for (int i = 0; i < g.dims.X(); ++i) f(i, j, k) = g.Node(i, j, k).Norm() - radius;
+    Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+    Surgery surgery(source, g.h, g.h, {}, {}, true);  // splits stretched edges from the start
+    surgery.Step(0, {}, f, tracker);
+    Mesh cut;
+    std::vector<EventSurgery> outcomes;
+    surgery.Build(source, tracker.Points(), cut, outcomes);
+    if (radius == 0.6)
+      EXPECT_GT(surgery.PointsAdded(), int(source.vert.size()));
+    else
+      EXPECT_EQ(surgery.PointsAdded(), 0);
+  }
+}
+
 // Fig. 5: a sphere becomes a torus; two discs go, one from each side of the axis.
 TEST(TopologyChange, SphereToTorus) {
   Mesh source, target;

@@ -59,42 +59,40 @@ struct Open {
   unsigned criteria;  // Criterion bits
 };
 // Measured at the commit that wrote them (figures in the `family |` lines and the closing
-// note of issue 12).
+// note of issue 12): grids 48 and 64 and the FinePairs at 96 and 128; the other pairs at 96
+// and 128 (EULERMAP_FAMILIES_ALL=1) at an earlier commit.
 const Open kOpen[] = {
-    {"chair", "chair_rails", 48, kCut | kLongest},
+    {"chair", "chair_rails", 48, kCut | kFlipped | kLongest},
     {"chair", "chair_rails", 64, kCut | kFlipped | kLongest},
     {"chair", "chair_rails", 96, kFlipped | kLongest},
     {"chair", "chair_rails", 128, kCut | kFlipped | kLongest},
-    {"chair", "chair_slats", 48, kFlipped | kLongest},
-    {"chair", "chair_slats", 64, kFlipped | kLongest},
+    {"chair", "chair_slats", 48, kLongest},
+    {"chair", "chair_slats", 64, kLongest},
     {"chair", "chair_slats", 96, kFlipped | kLongest},
     {"chair", "chair_slats", 128, kFlipped | kLongest},
     {"chair", "table", 48, kCut | kCoverage | kFlipped | kLongest},
     {"chair", "table", 64, kCut | kCoverage | kFlipped | kLongest},
     {"chair", "table", 96, kCut | kCoverage | kFlipped | kLongest},
     {"chair", "table", 128, kCut | kCoverage | kFlipped | kLongest},
-    {"chair_rails", "chair", 48, kLongest},
+    {"chair_rails", "chair", 48, kLongest},  // longest 4.90%: too near the bound to assert
     {"chair_rails", "chair", 96, kFlipped | kLongest},
     {"chair_rails", "chair", 128, kFlipped | kLongest},
     {"chair_slats", "chair", 64, kCut | kFlipped | kLongest},  // flipped 0.99%: too near the bound to assert
     {"chair_slats", "chair", 96, kCut | kFlipped | kLongest},
     {"chair_slats", "chair", 128, kCut | kFlipped | kLongest},
-    {"ring1", "ring2", 48, kFlipped | kLongest},
-    {"ring1", "ring2", 64, kCut | kLongest},
+    {"ring1", "ring2", 48, kCoverage},
+    {"ring1", "ring2", 64, kCoverage},  // coverage 97.11%: too near the bound to assert
     {"ring1", "ring2", 96, kFlipped | kLongest},
     {"ring1", "ring2", 128, kCut | kLongest},
-    {"ring2", "sphere", 96, kLongest},
-    {"ring2", "sphere", 128, kLongest},
     {"ring3", "sphere", 96, kLongest},
     {"ring3", "sphere", 128, kLongest},
-    {"sphere", "ring2", 48, kFlipped | kLongest},
+    {"sphere", "ring2", 48, kCoverage | kFlipped | kLongest},
     {"sphere", "ring2", 128, kCut | kCoverage | kFlipped | kLongest},
-    {"sphere", "ring3", 48, kCoverage | kLongest},
-    {"sphere", "ring3", 64, kFlipped | kLongest},
+    {"sphere", "ring3", 48, kCoverage},
     {"sphere", "ring3", 96, kLongest},
     {"sphere", "ring3", 128, kCut | kFlipped | kLongest},
-    {"sphere", "ring4", 48, kCut | kCoverage | kFlipped | kLongest},
-    {"sphere", "ring4", 64, kCut | kFlipped | kLongest},
+    {"sphere", "ring4", 48, kCut | kCoverage | kFlipped | kLongest},  // flipped 0.96%: too near the bound to assert
+    {"sphere", "ring4", 64, kCut},
     {"sphere", "ring4", 96, kFlipped | kLongest},
     {"sphere", "ring4", 128, kCut | kLongest},
     {"table", "chair", 48, kCut | kCoverage | kFlipped | kLongest},
