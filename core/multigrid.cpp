@@ -217,28 +217,27 @@ void BlockMultigrid::Cycle(std::size_t n) {
   Sweep(l, 1, false), Sweep(l, 0, false);
 }
 
-double BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z) {
+double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.layout.Positions());
 #pragma omp parallel num_threads(Threads())
   for (int e = 0; e < 6; ++e) {  // b = r, component e % 3 of colour e / 3
-    const double *from = r.c[e / 3][e % 3].data();
+    const float *from = r.c[e / 3][e % 3].data();
     float *to = fine.b.c[e / 3][e % 3].data();
 #pragma omp for simd schedule(static) nowait
-    for (long m = 0; m < n; ++m) to[m] = float(from[m]);
+    for (long m = 0; m < n; ++m) to[m] = from[m];
   }
   Cycle(0);
   return BlockSum(n, [&](long begin, long end) {  // z = x, then r . z
     double s = 0;
     for (int c = 0; c < 2; ++c)
       for (int a = 0; a < 3; ++a) {
-        const float *from = fine.x.c[c][a].data();
-        const double *v = r.c[c][a].data();
-        double *to = z.c[c][a].data();
+        const float *from = fine.x.c[c][a].data(), *v = r.c[c][a].data();
+        float *to = z.c[c][a].data();
 #pragma omp simd reduction(+ : s)
         for (long m = begin; m < end; ++m) {
           to[m] = from[m];
-          s += v[m] * to[m];
+          s += double(v[m]) * to[m];
         }
       }
     return s;

@@ -43,8 +43,8 @@
 namespace eulermap {
 
 // Blocks D_i and their inverses are symmetric 3x3 matrices, stored as 6 components (xx, xy,
-// xz, yy, yz, zz) in single precision (half the memory traffic of double; the conjugate
-// gradients around the preconditioner stay in double).
+// xz, yy, yz, zz) in single precision (half the memory traffic of double), as are the
+// vectors of the conjugate gradients around the preconditioner (velocity.h).
 class BlockMultigrid {
  public:
   // in:  the grid (its node counts set the levels), alpha. Allocates every level once;
@@ -61,7 +61,7 @@ class BlockMultigrid {
   // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
   // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0); returns r . z
   //      (block_sum.h: the same bits for any number of threads)
-  double Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z);
+  double Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z);
 
   int Levels() const { return int(levels_.size()); }
 

@@ -57,8 +57,10 @@ class VelocitySolver {
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
 
  private:
-  // Vectors of the system: one Point3 per node, split by colour (red_black.h).
-  using Vectors = RedBlackArrays<3, double>;
+  // Vectors of the system: one point per node, split by colour (red_black.h), in single
+  // precision (half the memory and its traffic: the solve is bound by it); sums and the
+  // solver's scalars in double.
+  using Vectors = RedBlackArrays<3>;
 
   // Both need bNorm = ||b|| > 0; x: the start, then the solution. precondition(r, z): z = M^-1 r,
   // returns r . z.
@@ -79,10 +81,11 @@ class VelocitySolver {
   Grid grid_;
   RedBlackLayout layout_;
   Vectors g_, b_;
-  RedBlackArrays<1, double> shift_;
-  // Kept from step to step (same grid): the multigrid levels and the solvers' vectors.
+  RedBlackArrays<1> shift_;
+  // Kept from step to step (same grid): the multigrid levels and the solvers' vectors (the
+  // preconditioned residual z shares q's: q = A p is dead once r is updated).
   std::unique_ptr<BlockMultigrid> multigrid_;
-  Vectors x_, r_, z_, p_, q_;
+  Vectors x_, r_, p_, q_;
 };
 
 } // namespace eulermap
