@@ -34,7 +34,7 @@ double Dot(const RedBlackArrays<3> &a, const RedBlackArrays<3> &b) {
 } // namespace
 
 VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
-                                    const VectorField &prior, const ScalarField &priorWeight) {
+                                    const VectorField &prior, const ScalarField &priorWeight, const Interrupt &interrupt) {
   grid_ = fk.grid;
   if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
   if (layout_.dims != grid_.dims) {
@@ -84,12 +84,13 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
     return s;
   }
   if (method_ == Method::GaussSeidel) {
-    s = SolveGaussSeidel(x_, bNorm);
+    s = SolveGaussSeidel(x_, bNorm, interrupt);
   } else if (method_ == Method::ConjugateGradient) {
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); });
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); }, interrupt);
   } else {
     multigrid_->Update();
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); });
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); },
+                               interrupt);
   }
   Point3 *out = V.values.data();
   ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
@@ -172,7 +173,8 @@ double VelocitySolver::BlockJacobi(const Vectors &r, Vectors &z) const {
 }
 
 VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
-                                                     const std::function<double(const Vectors &, Vectors &)> &precondition) {
+                                                     const std::function<double(const Vectors &, Vectors &)> &precondition,
+                                                     const Interrupt &interrupt) {
   VelocitySolve s;
   const long n = long(layout_.Positions());
   Vectors &r = r_, &z = q_, &p = p_, &q = q_;
@@ -180,7 +182,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   double rNorm = Residual(x, r);
   double rz = precondition(r, z);
   p = z;
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
     const double step = rz / Apply(p, q);  // q = A p
     const float stepf = float(step);
     rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += step p, r -= step q, then |r|^2
@@ -213,14 +215,14 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   return s;
 }
 
-VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm) {
+VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const Interrupt &interrupt) {
   VelocitySolve s;
   const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
   const float alpha = float(alpha_);
   double rNorm = Residual(x, r_);
   // Residuals cost as much as a sweep: check every few sweeps.
   const int checkEvery = 10;
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
     for (int sweep = 0; sweep < checkEvery && s.iterations < maxIterations_; ++sweep, ++s.iterations)
       for (int colour = 0; colour < 2; ++colour)
         ForEachRun(layout_, colour, colour, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {

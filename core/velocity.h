@@ -30,6 +30,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 #include "multigrid.h"
 
 #include <functional>
@@ -51,10 +52,11 @@ class VelocitySolver {
 
   // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
   //      and zeroed when its grid differs); prior P and its weights beta on the same
-  //      grid, or empty fields for none
-  // out: V = V_k, and the solve's figures
+  //      grid, or empty fields for none; interrupt, asked before each iteration (interrupt.h)
+  // out: V = V_k, and the solve's figures; where the interrupt stops it, the iterate it had
   VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
-                      const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
+                      const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField(),
+                      const Interrupt &interrupt = Interrupt());
 
  private:
   // Vectors of the system: one point per node, split by colour (red_black.h), in single
@@ -64,8 +66,9 @@ class VelocitySolver {
 
   // Both need bNorm = ||b|| > 0; x: the start, then the solution. precondition(r, z): z = M^-1 r,
   // returns r . z.
-  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition);
-  VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm);
+  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition,
+                                       const Interrupt &interrupt);
+  VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm, const Interrupt &interrupt);
   // r = b - A x, returns ||r||.
   double Residual(const Vectors &x, Vectors &r) const;
   // out = A x (the operator of (*)); returns x . A x.

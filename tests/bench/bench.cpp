@@ -236,8 +236,21 @@ int main(int argc, char **argv) {
       const int cells = std::atoi(argv[2]);
       options.gridNodes = vcg::Point3i(cells, cells, cells);
       options.align = Align::None;
-      ComputeMap(source, target, anchors, options, result);
+      // The longest wall time between two calls of the progress callback (pipeline.h): the
+      // GUI's bar moves and hears Cancel that often.
+      auto last = std::chrono::steady_clock::now();
+      double longest = 0;
+      std::string after;
+      ComputeMap(source, target, anchors, options, result, [&](double, const std::string &stage) {
+        const auto now = std::chrono::steady_clock::now();
+        const double gap = std::chrono::duration<double>(now - last).count();
+        if (gap > longest) longest = gap, after = stage;
+        last = now;
+        return true;
+      });
       PrintRow(std::string("grid ") + argv[2] + "^3", result.report, 0);
+      std::printf("grid %s^3: longest time between two progress calls %.2f s (ending at '%s')\n", argv[2], longest,
+                  after.c_str());
     } else if (mode == "vertices") {
       const int subdivisions = std::atoi(argv[2]);
       MakeSphere(source, Point3(0, 0, 0), 1, subdivisions);
