@@ -74,7 +74,9 @@ class BlockMultigrid {
     RedBlackArrays<1> shift;       // alpha n_i
     RedBlackArrays<6> inverse;     // (D_i + alpha n_i I)^-1, (xx, xy, xz, yy, yz, zz)
     RedBlackArrays<6> diagonal;    // D_i + alpha n_i I (red nodes only: the residual's)
-    RedBlackArrays<3> x, b, r;     // r: red nodes only
+    RedBlackArrays<3> x, r;        // r: red nodes only
+    RedBlackArrays<3> ownB;        // the right-hand side of a coarse level (restricted residual)
+    const RedBlackArrays<3> *b = nullptr;  // the right-hand side: ownB, or the finest level's r (Precondition)
     std::vector<float> gathered[3];  // x in Grid::Index order (coarse levels: the prolongation's)
     std::size_t Count() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   };

@@ -397,6 +397,7 @@ ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *grad
   if (interrupt.Cancelled()) return f;
   const WindingNumber winding(mesh);
   const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh));
+  if (interrupt.Stop()) return f;
 #pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(f.values.size()); ++n)
     if (inside[n]) {

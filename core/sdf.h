@@ -41,8 +41,8 @@ class WindingNumber {
 
 // gradient (when given): per node, the gradient of the signed distance (the unsigned
 // one's, distance_transform.h, turned round inside), for HermiteField (hermite_field.h).
-// interrupt: asked by the distance transform's sweeps; once it stops them, the unsigned
-// distance as far as it got.
+// interrupt: asked by the distance transform's sweeps and once the inside is known; once
+// it says stop, the unsigned distance as far as it got.
 ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr,
                            const Interrupt &interrupt = Interrupt());
 

@@ -20,8 +20,7 @@ namespace eulermap {
 int Threads();
 
 // The cores that other processes leave idle, at least 1 and at most OpenMP's default: the
-// machine's busy time (/proc/stat; that of niced processes only when this one is niced too)
-// less this process's own, over the last quarter second or more, looked at again once that much time has passed (a first look: the runnable tasks
+// machine's busy time (/proc/stat, niced processes included) less this process's own, over the last quarter second or more, looked at again once that much time has passed (a first look: the runnable tasks
 // of /proc/loadavg, this thread aside). OpenMP's default where Linux's figures are missing.
 int IdleCores();
 

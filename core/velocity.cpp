@@ -83,6 +83,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
     std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
     return s;
   }
+  if (interrupt.Stop()) return s;  // the frame and the system's assembly were a piece of work too
   if (method_ == Method::GaussSeidel) {
     s = SolveGaussSeidel(x_, bNorm, interrupt);
   } else if (method_ == Method::ConjugateGradient) {

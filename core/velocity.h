@@ -52,7 +52,8 @@ class VelocitySolver {
 
   // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
   //      and zeroed when its grid differs); prior P and its weights beta on the same
-  //      grid, or empty fields for none; interrupt, asked before each iteration (interrupt.h)
+  //      grid, or empty fields for none; interrupt, asked once the system is assembled and
+  //      before each iteration (interrupt.h)
   // out: V = V_k, and the solve's figures; where the interrupt stops it, the iterate it had
   VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField(),

@@ -240,17 +240,17 @@ int main(int argc, char **argv) {
       // GUI's bar moves and hears Cancel that often.
       auto last = std::chrono::steady_clock::now();
       double longest = 0;
-      std::string after;
+      std::string from, previous, to;
       ComputeMap(source, target, anchors, options, result, [&](double, const std::string &stage) {
         const auto now = std::chrono::steady_clock::now();
         const double gap = std::chrono::duration<double>(now - last).count();
-        if (gap > longest) longest = gap, after = stage;
-        last = now;
+        if (gap > longest) longest = gap, from = previous, to = stage;
+        last = now, previous = stage;
         return true;
       });
       PrintRow(std::string("grid ") + argv[2] + "^3", result.report, 0);
-      std::printf("grid %s^3: longest time between two progress calls %.2f s (ending at '%s')\n", argv[2], longest,
-                  after.c_str());
+      std::printf("grid %s^3: longest time between two progress calls %.2f s (from '%s' to '%s')\n", argv[2], longest,
+                  from.c_str(), to.c_str());
     } else if (mode == "vertices") {
       const int subdivisions = std::atoi(argv[2]);
       MakeSphere(source, Point3(0, 0, 0), 1, subdivisions);
