@@ -49,7 +49,7 @@ double SquaredDistance(const Triangle &t, const Point3 &p) { return Offset(t, p)
 
 } // namespace
 
-ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient) {
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient, const Interrupt &interrupt) {
   std::vector<Triangle> tris;
   for (const Face &f : mesh.face)
     if (!f.IsD()) tris.push_back({f.cP(0), f.cP(1), f.cP(2)});
@@ -101,10 +101,15 @@ ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gr
   //    nodes in that order; a node tests the nearest faces of its three neighbours behind
   //    it. A sweep depends on its own updates, so it runs on one thread.
   const long stride[3] = {1, long(dims.X()), long(dims.X()) * dims.Y()};
+  std::size_t sincePoll = 0;  // nodes swept since the interrupt was asked
   for (int octant = 0; octant < 8; ++octant) {
     const int dir[3] = {octant & 1 ? -1 : 1, octant & 2 ? -1 : 1, octant & 4 ? -1 : 1};
     int c[3];
-    for (c[2] = dir[2] > 0 ? 0 : dims[2] - 1; c[2] >= 0 && c[2] < dims[2]; c[2] += dir[2])
+    for (c[2] = dir[2] > 0 ? 0 : dims[2] - 1; c[2] >= 0 && c[2] < dims[2]; c[2] += dir[2]) {
+      if ((sincePoll += std::size_t(stride[2])) > kNodesBetweenPolls) {
+        sincePoll = std::size_t(stride[2]);
+        if (interrupt.Stop()) return out;
+      }
       for (c[1] = dir[1] > 0 ? 0 : dims[1] - 1; c[1] >= 0 && c[1] < dims[1]; c[1] += dir[1])
         for (c[0] = dir[0] > 0 ? 0 : dims[0] - 1; c[0] >= 0 && c[0] < dims[0]; c[0] += dir[0]) {
           const long n = long(grid.Index(c[0], c[1], c[2]));
@@ -117,6 +122,7 @@ ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gr
             if (q < d2[n]) d2[n] = q, nearest[n] = t;
           }
         }
+    }
   }
 #pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(count); ++n) out.values[n] = std::sqrt(d2[n]);

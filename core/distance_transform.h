@@ -20,6 +20,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 #include "mesh.h"
 
 namespace eulermap {
@@ -28,7 +29,9 @@ namespace eulermap {
 // out: per node, the distance to the nearest point of the mesh; gradient (when given): per
 //      node, the gradient of that distance, the unit vector from the nearest point (of the
 //      face found) to the node; on the surface, that face's unit normal (the mesh's
-//      orientation)
-ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr);
+//      orientation). The sweeps ask the interrupt every kNodesBetweenPolls nodes (interrupt.h)
+//      and return what they have when it stops them.
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr,
+                             const Interrupt &interrupt = Interrupt());
 
 } // namespace eulermap

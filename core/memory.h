@@ -8,10 +8,10 @@
 namespace eulermap {
 
 // Peak bytes per grid node of a whole run: the fields f0, f1, the frames f(., t_k) and
-// f(., t_k+1), V_k, the anchors' motion, the solver's vectors and its multigrid levels,
-// the Hermite field of the last pull-back. Measured peak over nodes (tests/bench --grids) is
-// about 390 B at 160^3.
-constexpr std::size_t kBytesPerGridNode = 400;
+// f(., t_k+1), V_k, the anchors' motion, the solver's single-precision vectors and its
+// multigrid levels, the gradients of the last pull-back. Measured peak over nodes
+// (eulermap_bench grid 256: 4208 MiB for 256^3 nodes, the meshes included) is 263 B.
+constexpr std::size_t kBytesPerGridNode = 270;
 // Bytes per tracked point (position, level, trajectory state, surgery's records).
 constexpr std::size_t kBytesPerPoint = 400;
 

@@ -83,7 +83,7 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
     l.inverse.Resize(l.layout);
     l.diagonal.Resize(l.layout, 1);
     l.x.Resize(l.layout);
-    l.b.Resize(l.layout);
+    if (&l != &levels_.front()) l.ownB.Resize(l.layout), l.b = &l.ownB;
     l.r.Resize(l.layout, 1);
     if (&l != &levels_.front())
       for (std::vector<float> &g : l.gathered) g.resize(l.Count());
@@ -161,7 +161,7 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
     const float *b[3], *o[3], *inv[6];
     float *x[3];
     for (int a = 0; a < 3; ++a)
-      b[a] = l.b.c[c][a].data() + run.first, o[a] = l.x.c[1 - c][a].data() + run.first, x[a] = l.x.c[c][a].data() + run.first;
+      b[a] = l.b->c[c][a].data() + run.first, o[a] = l.x.c[1 - c][a].data() + run.first, x[a] = l.x.c[c][a].data() + run.first;
     for (int e = 0; e < 6; ++e) inv[e] = l.inverse.c[c][e].data() + run.first;
     auto solve = [&](long m, float s0, float s1, float s2) {
       x[0][m] = inv[0][m] * s0 + inv[1][m] * s1 + inv[2][m] * s2;
@@ -188,7 +188,7 @@ void BlockMultigrid::Residual(Level &l) {
     const float *b[3], *o[3], *x[3], *d[6];
     float *r[3];
     for (int a = 0; a < 3; ++a)
-      b[a] = l.b.c[0][a].data() + run.first, o[a] = l.x.c[1][a].data() + run.first, x[a] = l.x.c[0][a].data() + run.first,
+      b[a] = l.b->c[0][a].data() + run.first, o[a] = l.x.c[1][a].data() + run.first, x[a] = l.x.c[0][a].data() + run.first,
       r[a] = l.r.c[0][a].data() + run.first;
     for (int e = 0; e < 6; ++e) d[e] = l.diagonal.c[0][e].data() + run.first;
 #pragma omp simd
@@ -211,34 +211,27 @@ void BlockMultigrid::Cycle(std::size_t n) {
   Sweep(l, 0, true), Sweep(l, 1, false);
   Residual(l);
   Level &c = levels_[n + 1];
-  FullWeighting<true>(l.layout, l.r, c.layout, c.b);  // the residual is 0 at black nodes
+  FullWeighting<true>(l.layout, l.r, c.layout, c.ownB);  // the residual is 0 at black nodes
   Cycle(n + 1);
   ProlongAdd(c, l);
   Sweep(l, 1, false), Sweep(l, 0, false);
 }
 
-double BlockMultigrid::Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z) {
+double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.layout.Positions());
-#pragma omp parallel num_threads(Threads())
-  for (int e = 0; e < 6; ++e) {  // b = r, component e % 3 of colour e / 3
-    const double *from = r.c[e / 3][e % 3].data();
-    float *to = fine.b.c[e / 3][e % 3].data();
-#pragma omp for simd schedule(static) nowait
-    for (long m = 0; m < n; ++m) to[m] = float(from[m]);
-  }
+  fine.b = &r;  // read in place
   Cycle(0);
   return BlockSum(n, [&](long begin, long end) {  // z = x, then r . z
     double s = 0;
     for (int c = 0; c < 2; ++c)
       for (int a = 0; a < 3; ++a) {
-        const float *from = fine.x.c[c][a].data();
-        const double *v = r.c[c][a].data();
-        double *to = z.c[c][a].data();
+        const float *from = fine.x.c[c][a].data(), *v = r.c[c][a].data();
+        float *to = z.c[c][a].data();
 #pragma omp simd reduction(+ : s)
         for (long m = begin; m < end; ++m) {
           to[m] = from[m];
-          s += v[m] * to[m];
+          s += double(v[m]) * to[m];
         }
       }
     return s;

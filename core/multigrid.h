@@ -43,8 +43,8 @@
 namespace eulermap {
 
 // Blocks D_i and their inverses are symmetric 3x3 matrices, stored as 6 components (xx, xy,
-// xz, yy, yz, zz) in single precision (half the memory traffic of double; the conjugate
-// gradients around the preconditioner stay in double).
+// xz, yy, yz, zz) in single precision (half the memory traffic of double), as are the
+// vectors of the conjugate gradients around the preconditioner (velocity.h).
 class BlockMultigrid {
  public:
   // in:  the grid (its node counts set the levels), alpha. Allocates every level once;
@@ -61,7 +61,7 @@ class BlockMultigrid {
   // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
   // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0); returns r . z
   //      (block_sum.h: the same bits for any number of threads)
-  double Precondition(const RedBlackArrays<3, double> &r, RedBlackArrays<3, double> &z);
+  double Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z);
 
   int Levels() const { return int(levels_.size()); }
 
@@ -74,7 +74,9 @@ class BlockMultigrid {
     RedBlackArrays<1> shift;       // alpha n_i
     RedBlackArrays<6> inverse;     // (D_i + alpha n_i I)^-1, (xx, xy, xz, yy, yz, zz)
     RedBlackArrays<6> diagonal;    // D_i + alpha n_i I (red nodes only: the residual's)
-    RedBlackArrays<3> x, b, r;     // r: red nodes only
+    RedBlackArrays<3> x, r;        // r: red nodes only
+    RedBlackArrays<3> ownB;        // the right-hand side of a coarse level (restricted residual)
+    const RedBlackArrays<3> *b = nullptr;  // the right-hand side: ownB, or the finest level's r (Precondition)
     std::vector<float> gathered[3];  // x in Grid::Index order (coarse levels: the prolongation's)
     std::size_t Count() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   };

@@ -4,6 +4,7 @@
 #include "grid.h"
 #include "hermite_field.h"
 #include "input.h"
+#include "interrupt.h"
 #include "memory.h"
 #include "morph_topology.h"
 #include "morph.h"
@@ -228,17 +229,18 @@ struct Fields {
   VectorField gradient0, gradient1;
 };
 
-Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels) {
+Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels, const Interrupt &interrupt) {
   Fields s;
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
   // fields are made side by side.
 #pragma omp parallel sections num_threads(Threads())
   {
 #pragma omp section
-    s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr);
+    s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr, interrupt);
 #pragma omp section
-    s.f1 = SignedDistance(m.placed, grid, &s.gradient1);
+    s.f1 = SignedDistance(m.placed, grid, &s.gradient1, interrupt);
   }
+  if (interrupt.Cancelled()) throw Error("cancelled");
   RequireInside(s.f0, "source");
   RequireInside(s.f1, "target");
   return s;
@@ -266,7 +268,7 @@ Tracker StartTracking(const Meshes &m, const Fields &fields, const std::vector<P
 // planned events (surgery.h; V_k's saddles only orient its cuts). Then the last pull-back
 // onto f1 read with sub-cell accuracy.
 void Deform(const Morph &morph, const Fields &fields, const Options &options, const Grid &grid, Tracker &tracker,
-            Surgery &surgery, Report &rep, const Stage &stage) {
+            Surgery &surgery, Report &rep, const Stage &stage, const Interrupt &interrupt) {
   auto t0 = Clock::now();
   ScalarField fCur, fNext;
   morph.Frame(0, fCur);
@@ -285,7 +287,8 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
     }
     rep.times.interp += Seconds(t0);
     t0 = Clock::now();
-    const VelocitySolve s = solver.Solve(fCur, fNext, dt, V, anchorMotion, anchorWeight);  // VF: V_k, Eqs. 2-5
+    const VelocitySolve s = solver.Solve(fCur, fNext, dt, V, anchorMotion, anchorWeight, interrupt);  // VF: V_k, Eqs. 2-5
+    if (interrupt.Cancelled()) throw Error("cancelled");
     rep.times.velocity += Seconds(t0);
     rep.solverFigures.totalIterations += s.iterations;
     rep.solverFigures.maxIterations = std::max(rep.solverFigures.maxIterations, s.iterations);
@@ -398,7 +401,7 @@ MorphEvents FindEvents(const Morph &morph, const Meshes &m, const Grid &grid, co
 
 void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vector<AnchorPair> &anchors,
              const Options &options, const std::vector<Point3> &samples, const Morph &morph, MorphEvents events,
-             const Report &base, Result &result, const Stage &stage) {
+             const Report &base, Result &result, const Stage &stage, const Interrupt &interrupt) {
   Report &rep = result.report;
   rep = base;
   rep.morphMode = morph.Describe();
@@ -411,7 +414,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   Tracker tracker = StartTracking(m, fields, samples);
   Surgery surgery(m.source, options.holeRadius * grid.h, grid.h, rep.topologyEvents, plan,
                   morph.mode() == Morph::Mode::GrowShrink);  // surgery.h
-  Deform(morph, fields, options, grid, tracker, surgery, rep, stage);
+  Deform(morph, fields, options, grid, tracker, surgery, rep, stage, interrupt);
 
   // Images on the placed target: measure, then project onto the target mesh itself.
   stage(0.9, "measuring the map");
@@ -535,8 +538,11 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
       throw Error("sample point " + std::to_string(n) + " has a NaN or infinite coordinate");
   const ThreadCount threads(options.threads);
   double reached = 0;  // the share reported last: progress never goes back
+  std::string current;  // and its stage
+  // The long loops' polls (interrupt.h) report the stage again.
+  const Interrupt interrupt([&] { return !progress || progress(reached, current); });
   const Stage stage = [&](double share, const std::string &name) {
-    reached = share;
+    reached = share, current = name;
     if (progress && !progress(share, name)) throw Error("cancelled");
   };
   Report &rep = result.report;
@@ -560,7 +566,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
 
   stage(0.0, "signed distance fields");
   auto t0 = Clock::now();
-  const Fields fields = SignedDistanceFields(m, grid, !samples.empty());
+  const Fields fields = SignedDistanceFields(m, grid, !samples.empty(), interrupt);
   rep.times.sdf = Seconds(t0);
 
   // The morph (morph.h). The linear blend, unless it grows a part of the target from nothing
@@ -591,13 +597,13 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     MorphEvents events =
         order[n] == Morph::Blend::Linear ? std::move(linearEvents) : FindEvents(*morph, m, grid, options, attemptStage);
     if (n == 0) {
-      Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, result, stage);
+      Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, result, stage, interrupt);
       result.report.times.interp += setup;
       if (Failures(result.report) == 0) break;
       continue;
     }
     Result other;
-    Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, other, attemptStage);
+    Attempt(m, fields, grid, anchors, options, samples, *morph, std::move(events), base, other, attemptStage, interrupt);
     other.report.times.interp += setup;
     const std::string first = Summary(result.report), second = Summary(other.report);
     const bool keepOther = Better(other.report, result.report);

@@ -41,7 +41,11 @@ struct Result {
   Report report;
 };
 
-// Called with a share in [0,1] and the stage's name; return false to cancel.
+// Called with a share in [0,1] and the stage's name; return false to cancel. Called at each
+// stage, and again with the same share and name inside the long loops: before each
+// conjugate-gradient iteration of a velocity solve (and once its system is assembled), every
+// kNodesBetweenPolls nodes of a distance sweep and once the inside is known (interrupt.h),
+// on the thread that called ComputeMap.
 using Progress = std::function<bool(double, const std::string &)>;
 
 // samples: extra points on the source (or off it: each follows its own level set) to map

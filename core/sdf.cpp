@@ -392,10 +392,12 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
 // in:  mesh — triangle mesh, closed or with holes; grid — the lattice
 // out: f(node) = +/- distance to the nearest surface point (distance_transform.h),
 //      negative where the generalized winding number is >= 1/2 (DESIGN.md: sdf.h).
-ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient) {
-  ScalarField f = UnsignedDistance(mesh, grid, gradient);
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient, const Interrupt &interrupt) {
+  ScalarField f = UnsignedDistance(mesh, grid, gradient, interrupt);
+  if (interrupt.Cancelled()) return f;
   const WindingNumber winding(mesh);
   const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh));
+  if (interrupt.Stop()) return f;
 #pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(f.values.size()); ++n)
     if (inside[n]) {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 #include "mesh.h"
 
 #include <memory>
@@ -40,6 +41,9 @@ class WindingNumber {
 
 // gradient (when given): per node, the gradient of the signed distance (the unsigned
 // one's, distance_transform.h, turned round inside), for HermiteField (hermite_field.h).
-ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr);
+// interrupt: asked by the distance transform's sweeps and once the inside is known; once
+// it says stop, the unsigned distance as far as it got.
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr,
+                           const Interrupt &interrupt = Interrupt());
 
 } // namespace eulermap

@@ -19,14 +19,14 @@ template <class Vectors> auto Arrays(Vectors &v) {
   return p;
 }
 
-double Dot(const RedBlackArrays<3, double> &a, const RedBlackArrays<3, double> &b) {
+double Dot(const RedBlackArrays<3> &a, const RedBlackArrays<3> &b) {
   const auto pa = Arrays(a), pb = Arrays(b);
   return BlockSum(long(a.c[0][0].size()), [&](long begin, long end) {
     double s = 0;
     for (int e = 0; e < 6; ++e) {
-      const double *u = pa[e], *v = pb[e];
+      const float *u = pa[e], *v = pb[e];
 #pragma omp simd reduction(+ : s)
-      for (long m = begin; m < end; ++m) s += u[m] * v[m];
+      for (long m = begin; m < end; ++m) s += double(u[m]) * v[m];
     }
     return s;
   });
@@ -34,12 +34,12 @@ double Dot(const RedBlackArrays<3, double> &a, const RedBlackArrays<3, double> &
 } // namespace
 
 VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
-                                    const VectorField &prior, const ScalarField &priorWeight) {
+                                    const VectorField &prior, const ScalarField &priorWeight, const Interrupt &interrupt) {
   grid_ = fk.grid;
   if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
-    for (Vectors *v : {&g_, &b_, &x_, &r_, &z_, &p_, &q_}) v->Resize(layout_);
+    for (Vectors *v : {&g_, &b_, &x_, &r_, &p_, &q_}) v->Resize(layout_);
     shift_.Resize(layout_);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
@@ -53,7 +53,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const double *weight = withPrior ? priorWeight.values.data() : nullptr;
   ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
     const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
-    double *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
+    float *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
     float *D[6] = {};
     for (int a = 0; a < 3; ++a)
       g[a] = g_.c[c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first;
@@ -83,17 +83,19 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
     std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
     return s;
   }
+  if (interrupt.Stop()) return s;  // the frame and the system's assembly were a piece of work too
   if (method_ == Method::GaussSeidel) {
-    s = SolveGaussSeidel(x_, bNorm);
+    s = SolveGaussSeidel(x_, bNorm, interrupt);
   } else if (method_ == Method::ConjugateGradient) {
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); });
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); }, interrupt);
   } else {
     multigrid_->Update();
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); });
+    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); },
+                               interrupt);
   }
   Point3 *out = V.values.data();
   ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
-    const double *x[3] = {x_.c[c][0].data() + run.first, x_.c[c][1].data() + run.first, x_.c[c][2].data() + run.first};
+    const float *x[3] = {x_.c[c][0].data() + run.first, x_.c[c][1].data() + run.first, x_.c[c][2].data() + run.first};
     for (int t = 0; t < run.count; ++t) out[row + run.firstI + 2 * t] = Point3(x[0][t], x[1][t], x[2][t]);
   });
   return s;
@@ -101,28 +103,28 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
 
 double VelocitySolver::Apply(const Vectors &x, Vectors &out) const {
   const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
-  const double alpha = alpha_;
+  const float alpha = float(alpha_);
   // x . out summed by plane (each plane's runs in order, by one thread), then the planes in
   // order: the same bits for any number of threads.
   std::vector<double> plane(layout_.dims[2], 0.0);
   ForEachRun(layout_, 0, 1, [&](int, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
     const long w = run.west;
-    const double *v[3], *o[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
-    double *y[3];
+    const float *v[3], *o[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
+    float *y[3];
     for (int a = 0; a < 3; ++a)
       v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, g[a] = g_.c[c][a].data() + run.first,
       y[a] = out.c[c][a].data() + run.first;
     // (g g^T + (alpha n_i + beta_i) I) V_i - alpha sum_j V_j, the left-hand side of (*).
 #pragma omp simd
     for (long m = 0; m < run.count; ++m) {
-      const double gv = g[0][m] * v[0][m] + g[1][m] * v[1][m] + g[2][m] * v[2][m];
+      const float gv = g[0][m] * v[0][m] + g[1][m] * v[1][m] + g[2][m] * v[2][m];
       y[0][m] = g[0][m] * gv + shift[m] * v[0][m] - alpha * NeighbourSum(o[0], m, w, hy, hz);
       y[1][m] = g[1][m] * gv + shift[m] * v[1][m] - alpha * NeighbourSum(o[1], m, w, hy, hz);
       y[2][m] = g[2][m] * gv + shift[m] * v[2][m] - alpha * NeighbourSum(o[2], m, w, hy, hz);
     }
     double dot = 0;  // a second pass while the run is in cache: a reduction in the loop above is not vectorised
 #pragma omp simd reduction(+ : dot)
-    for (long m = 0; m < run.count; ++m) dot += v[0][m] * y[0][m] + v[1][m] * y[1][m] + v[2][m] * y[2][m];
+    for (long m = 0; m < run.count; ++m) dot += double(v[0][m]) * y[0][m] + double(v[1][m]) * y[1][m] + double(v[2][m]) * y[2][m];
     plane[k] += dot;
   });
   return std::accumulate(plane.begin(), plane.end(), 0.0);
@@ -135,12 +137,12 @@ double VelocitySolver::Residual(const Vectors &x, Vectors &r) const {
   return std::sqrt(BlockSum(long(layout_.Positions()), [&](long begin, long end) {
     double s = 0;
     for (int e = 0; e < 6; ++e) {
-      const double *b = pb[e];
-      double *v = pr[e];
+      const float *b = pb[e];
+      float *v = pr[e];
 #pragma omp simd reduction(+ : s)
       for (long m = begin; m < end; ++m) {
         v[m] = b[m] - v[m];
-        s += v[m] * v[m];
+        s += double(v[m]) * v[m];
       }
     }
     return s;
@@ -151,59 +153,61 @@ double VelocitySolver::BlockJacobi(const Vectors &r, Vectors &z) const {
   // (g g^T + c I)^-1 = (I - g g^T / (c + |g|^2)) / c (Sherman-Morrison), c = alpha n_i + beta_i.
   std::vector<double> plane(layout_.dims[2], 0.0);  // r . z by plane, in order (as Apply)
   ForEachRun(layout_, 0, 1, [&](int, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
-    const double *v[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
-    double *y[3];
+    const float *v[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
+    float *y[3];
     for (int a = 0; a < 3; ++a)
       v[a] = r.c[c][a].data() + run.first, g[a] = g_.c[c][a].data() + run.first, y[a] = z.c[c][a].data() + run.first;
 #pragma omp simd
     for (long m = 0; m < run.count; ++m) {
-      const double gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
-      const double k = (g[0][m] * v[0][m] + g[1][m] * v[1][m] + g[2][m] * v[2][m]) / (shift[m] + gg);
+      const float gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+      const float k = (g[0][m] * v[0][m] + g[1][m] * v[1][m] + g[2][m] * v[2][m]) / (shift[m] + gg);
       y[0][m] = (v[0][m] - g[0][m] * k) / shift[m];
       y[1][m] = (v[1][m] - g[1][m] * k) / shift[m];
       y[2][m] = (v[2][m] - g[2][m] * k) / shift[m];
     }
     double dot = 0;
 #pragma omp simd reduction(+ : dot)
-    for (long m = 0; m < run.count; ++m) dot += v[0][m] * y[0][m] + v[1][m] * y[1][m] + v[2][m] * y[2][m];
+    for (long m = 0; m < run.count; ++m) dot += double(v[0][m]) * y[0][m] + double(v[1][m]) * y[1][m] + double(v[2][m]) * y[2][m];
     plane[k] += dot;
   });
   return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 
 VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
-                                                     const std::function<double(const Vectors &, Vectors &)> &precondition) {
+                                                     const std::function<double(const Vectors &, Vectors &)> &precondition,
+                                                     const Interrupt &interrupt) {
   VelocitySolve s;
   const long n = long(layout_.Positions());
-  Vectors &r = r_, &z = z_, &p = p_, &q = q_;
+  Vectors &r = r_, &z = q_, &p = p_, &q = q_;
   const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
   double rNorm = Residual(x, r);
   double rz = precondition(r, z);
   p = z;
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
     const double step = rz / Apply(p, q);  // q = A p
+    const float stepf = float(step);
     rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += step p, r -= step q, then |r|^2
       double t = 0;
       for (int e = 0; e < 6; ++e) {
-        double *u = px[e], *v = pr[e];
-        const double *dp = pp[e], *dq = pq[e];
+        float *u = px[e], *v = pr[e];
+        const float *dp = pp[e], *dq = pq[e];
 #pragma omp simd reduction(+ : t)
         for (long m = begin; m < end; ++m) {
-          u[m] += dp[m] * step;
-          v[m] -= dq[m] * step;
-          t += v[m] * v[m];
+          u[m] += dp[m] * stepf;
+          v[m] -= dq[m] * stepf;
+          t += double(v[m]) * v[m];
         }
       }
       return t;
     }));
     ++s.iterations;
     const double rzNext = precondition(r, z);
-    const double beta = rzNext / rz;
+    const float beta = float(rzNext / rz);
     rz = rzNext;
 #pragma omp parallel num_threads(Threads())
     for (int e = 0; e < 6; ++e) {  // p = z + beta p
-      double *u = pp[e];
-      const double *v = pz[e];
+      float *u = pp[e];
+      const float *v = pz[e];
 #pragma omp for simd schedule(static) nowait
       for (long m = 0; m < n; ++m) u[m] = v[m] + u[m] * beta;
     }
@@ -212,20 +216,20 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   return s;
 }
 
-VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm) {
+VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const Interrupt &interrupt) {
   VelocitySolve s;
   const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
-  const double alpha = alpha_;
+  const float alpha = float(alpha_);
   double rNorm = Residual(x, r_);
   // Residuals cost as much as a sweep: check every few sweeps.
   const int checkEvery = 10;
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_) {
+  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
     for (int sweep = 0; sweep < checkEvery && s.iterations < maxIterations_; ++sweep, ++s.iterations)
       for (int colour = 0; colour < 2; ++colour)
         ForEachRun(layout_, colour, colour, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
           const long w = run.west;
-          const double *o[3], *b[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
-          double *v[3];
+          const float *o[3], *b[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
+          float *v[3];
           for (int a = 0; a < 3; ++a)
             v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first,
             g[a] = g_.c[c][a].data() + run.first;
@@ -233,11 +237,11 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm) {
           // written for a general b: solve (g g^T + c I) V = alpha sum + b, c = alpha n_i + beta_i.
 #pragma omp simd
           for (long m = 0; m < run.count; ++m) {
-            const double r0 = alpha * NeighbourSum(o[0], m, w, hy, hz) + b[0][m],
+            const float r0 = alpha * NeighbourSum(o[0], m, w, hy, hz) + b[0][m],
                          r1 = alpha * NeighbourSum(o[1], m, w, hy, hz) + b[1][m],
                          r2 = alpha * NeighbourSum(o[2], m, w, hy, hz) + b[2][m];
-            const double gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
-            const double k = (g[0][m] * r0 + g[1][m] * r1 + g[2][m] * r2) / (shift[m] + gg);
+            const float gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+            const float k = (g[0][m] * r0 + g[1][m] * r1 + g[2][m] * r2) / (shift[m] + gg);
             v[0][m] = (r0 - g[0][m] * k) / shift[m];
             v[1][m] = (r1 - g[1][m] * k) / shift[m];
             v[2][m] = (r2 - g[2][m] * k) / shift[m];

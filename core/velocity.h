@@ -30,6 +30,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 #include "multigrid.h"
 
 #include <functional>
@@ -51,19 +52,24 @@ class VelocitySolver {
 
   // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
   //      and zeroed when its grid differs); prior P and its weights beta on the same
-  //      grid, or empty fields for none
-  // out: V = V_k, and the solve's figures
+  //      grid, or empty fields for none; interrupt, asked once the system is assembled and
+  //      before each iteration (interrupt.h)
+  // out: V = V_k, and the solve's figures; where the interrupt stops it, the iterate it had
   VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
-                      const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField());
+                      const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField(),
+                      const Interrupt &interrupt = Interrupt());
 
  private:
-  // Vectors of the system: one Point3 per node, split by colour (red_black.h).
-  using Vectors = RedBlackArrays<3, double>;
+  // Vectors of the system: one point per node, split by colour (red_black.h), in single
+  // precision (half the memory and its traffic: the solve is bound by it); sums and the
+  // solver's scalars in double.
+  using Vectors = RedBlackArrays<3>;
 
   // Both need bNorm = ||b|| > 0; x: the start, then the solution. precondition(r, z): z = M^-1 r,
   // returns r . z.
-  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition);
-  VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm);
+  VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition,
+                                       const Interrupt &interrupt);
+  VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm, const Interrupt &interrupt);
   // r = b - A x, returns ||r||.
   double Residual(const Vectors &x, Vectors &r) const;
   // out = A x (the operator of (*)); returns x . A x.
@@ -79,10 +85,11 @@ class VelocitySolver {
   Grid grid_;
   RedBlackLayout layout_;
   Vectors g_, b_;
-  RedBlackArrays<1, double> shift_;
-  // Kept from step to step (same grid): the multigrid levels and the solvers' vectors.
+  RedBlackArrays<1> shift_;
+  // Kept from step to step (same grid): the multigrid levels and the solvers' vectors (the
+  // preconditioned residual z shares q's: q = A p is dead once r is updated).
   std::unique_ptr<BlockMultigrid> multigrid_;
-  Vectors x_, r_, z_, p_, q_;
+  Vectors x_, r_, p_, q_;
 };
 
 } // namespace eulermap

@@ -4,7 +4,9 @@
 //
 //   eulermap_bench row N [--threads T] [--solver mg|cg|gs] [--deformation S]
 //                                                          one of the four Table 1 rows (N = 1..4)
-//   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a CELLS^3 grid
+//   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a grid of CELLS^3 nodes
+//   eulermap_bench load N                                   row N quiet, then beside one CPU-bound process per
+//                                                           core: the wall times and their ratio
 //   eulermap_bench vertices S                               sphere of S subdivisions -> ellipsoid, 64 cells
 //   eulermap_bench soup S                                   sphere of S subdivisions -> torus, 64 cells, welded
 //                                                           and as a triangle soup (every face its own vertices)
@@ -19,6 +21,10 @@
 #include "tests/support/meshes.h"
 
 #include "core/parameters.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -128,6 +134,50 @@ Options OptionsFrom(int argc, char **argv) {
   return o;
 }
 
+// Table 1 row n (1..4): its meshes and anchors, the map into result.
+void MapRow(int n, int argc, char **argv, Options options, Result &result, double &strength) {
+  const Row &row = kRows[n - 1];
+  Mesh source, target;
+  LoadMesh(DataMesh(row.mesh), source);
+  RefineMidpoint(source, row.refinements);
+  LoadMesh(DataMesh(row.mesh), target);
+  RefineMidpoint(target, row.refinements);
+  strength = FlagValue(argc, argv, "--deformation", row.deformation);
+  for (Vertex &v : target.vert) v.P() = Bend(v.P(), source.bbox, strength);
+  const std::vector<AnchorPair> anchors = FarthestPointAnchors(source, target, row.anchors);
+  options.gridNodes = row.nodes;
+  options.steps = 40;
+  ComputeMap(source, target, anchors, options, result);
+}
+
+// Wall seconds of fn().
+template <class Fn> double Wall(Fn &&fn) {
+  const auto start = std::chrono::steady_clock::now();
+  fn();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One CPU-bound process per core (children that spin until killed), for the load mode.
+class BusyProcesses {
+ public:
+  explicit BusyProcesses(int count) {
+    for (int n = 0; n < count; ++n) {
+      const pid_t pid = fork();
+      if (pid == 0) {
+        volatile unsigned long spin = 0;
+        for (;;) spin = spin + 1;
+      }
+      if (pid > 0) pids_.push_back(pid);
+    }
+  }
+  ~BusyProcesses() {
+    for (pid_t pid : pids_) kill(pid, SIGKILL), waitpid(pid, nullptr, 0);
+  }
+
+ private:
+  std::vector<pid_t> pids_;
+};
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -155,26 +205,52 @@ int main(int argc, char **argv) {
   Result result;
   try {
     if (mode == "row") {
-      const Row &row = kRows[std::atoi(argv[2]) - 1];
-      LoadMesh(DataMesh(row.mesh), source);
-      RefineMidpoint(source, row.refinements);
-      LoadMesh(DataMesh(row.mesh), target);
-      RefineMidpoint(target, row.refinements);
-      const double strength = FlagValue(argc, argv, "--deformation", row.deformation);
-      for (Vertex &v : target.vert) v.P() = Bend(v.P(), source.bbox, strength);
-      anchors = FarthestPointAnchors(source, target, row.anchors);
-      options.gridNodes = row.nodes;
-      options.steps = 40;
-      ComputeMap(source, target, anchors, options, result);
+      const int n = std::atoi(argv[2]);
+      double strength;
+      MapRow(n, argc, argv, options, result, strength);
+      const Row &row = kRows[n - 1];
       PrintRow(std::string("Table 1 row ") + argv[2] + (strength != row.deformation ? ", deformation " + std::to_string(strength).substr(0, 4) : ""),
                result.report, row.paperInt + row.paperVf + row.paperDef);
+    } else if (mode == "load") {
+      // The same map quiet and beside one busy process per core, with OpenMP's settings as
+      // the environment leaves them (tests/bench/run unsets OMP_WAIT_POLICY): a team larger
+      // than the idle cores waits at its barriers (threads.h).
+      const int n = std::atoi(argv[2]);
+      const int cores = int(sysconf(_SC_NPROCESSORS_ONLN));
+      double strength;
+      const double quiet = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
+      const int quietThreads = result.report.threads;
+      double busy;
+      {
+        const BusyProcesses load(cores);
+        busy = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
+      }
+      std::printf("load: Table 1 row %d, %.2f s quiet (%d threads), %.2f s beside %d busy processes (%d threads at the "
+                  "start): %.2f times\n",
+                  n, quiet, quietThreads, busy, cores, result.report.threads, busy / quiet);
     } else if (mode == "grid") {
+      // The grid of CELLS^3 nodes over the common box (grid_resolution CELLS would give
+      // CELLS + 1 nodes on the longest axis and fewer across).
       MakeSphere(source, Point3(0, 0, 0), 1, 5);
       MakeEllipsoid(target, Point3(0, 0, 0), Point3(1.4, 0.8, 0.9), 5);
-      options.gridResolution = std::atoi(argv[2]);
+      const int cells = std::atoi(argv[2]);
+      options.gridNodes = vcg::Point3i(cells, cells, cells);
       options.align = Align::None;
-      ComputeMap(source, target, anchors, options, result);
+      // The longest wall time between two calls of the progress callback (pipeline.h): the
+      // GUI's bar moves and hears Cancel that often.
+      auto last = std::chrono::steady_clock::now();
+      double longest = 0;
+      std::string from, previous, to;
+      ComputeMap(source, target, anchors, options, result, [&](double, const std::string &stage) {
+        const auto now = std::chrono::steady_clock::now();
+        const double gap = std::chrono::duration<double>(now - last).count();
+        if (gap > longest) longest = gap, from = previous, to = stage;
+        last = now, previous = stage;
+        return true;
+      });
       PrintRow(std::string("grid ") + argv[2] + "^3", result.report, 0);
+      std::printf("grid %s^3: longest time between two progress calls %.2f s (from '%s' to '%s')\n", argv[2], longest,
+                  from.c_str(), to.c_str());
     } else if (mode == "vertices") {
       const int subdivisions = std::atoi(argv[2]);
       MakeSphere(source, Point3(0, 0, 0), 1, subdivisions);

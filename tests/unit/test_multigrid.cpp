@@ -57,7 +57,7 @@ struct Problem {
 
   // z = M^-1 r through the layout's arrays; returns r . z as Precondition gives it.
   double Precondition(const std::vector<Point3> &r, std::vector<Point3> &z) {
-    RedBlackArrays<3, double> rr, zz;
+    RedBlackArrays<3> rr, zz;
     rr.Resize(layout);
     zz.Resize(layout);
     grid.ForEachNode([&](int i, int j, int k, std::size_t n) {

@@ -29,12 +29,14 @@ TEST(Threads, ACountSetsTheTeamOfThisThreadsRegionsWhileItLives) {
     EXPECT_EQ(TeamSize(), 1);
     EXPECT_EQ(omp_get_max_threads(), all) << "OpenMP's own setting is not touched";
   }
-  EXPECT_EQ(Threads(), all);
+  EXPECT_EQ(Threads(), IdleCores());
 }
 
-TEST(Threads, ZeroLeavesOpenMPsDefault) {
+TEST(Threads, ZeroLeavesTheCoresOtherProcessesLeaveIdle) {
   const ThreadCount none(0);
-  EXPECT_EQ(Threads(), omp_get_max_threads());
+  EXPECT_EQ(Threads(), IdleCores());
+  EXPECT_GE(Threads(), 1);
+  EXPECT_LE(Threads(), omp_get_max_threads());
 }
 
 TEST(Threads, AMapLeavesOpenMPsSettingAsItFoundIt) {

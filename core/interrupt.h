@@ -1,0 +1,47 @@
+// eulermap::Interrupt — how the core's long loops keep the host's progress bar moving and
+// hear Cancel on big grids (OpenVDB's interrupter): between bounded pieces of work they
+// ask Stop(), and stop when it says so.
+//
+// The pieces: a conjugate-gradient iteration of the velocity solve with its multigrid
+// V-cycle (velocity.h), and kNodesBetweenPolls nodes of a distance-transform sweep
+// (distance_transform.h); also where a velocity system is assembled and where an inside set
+// is known. The pipeline reports its stages between them (pipeline.h).
+//
+// Stop() never throws, so it may be asked inside a parallel region: on the thread that
+// made the Interrupt (the host's, whose callback may touch its GUI) it asks the callback;
+// on any other thread it only reads whether an earlier answer was "cancel". A loop that
+// stops returns what it has; its caller then throws Error("cancelled") (Cancelled()).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <thread>
+
+namespace eulermap {
+
+// Nodes of a distance-transform sweep between two polls.
+constexpr std::size_t kNodesBetweenPolls = std::size_t(1) << 18;
+
+class Interrupt {
+ public:
+  using Callback = std::function<bool()>;  // false: cancel
+
+  Interrupt() = default;  // never stops
+  explicit Interrupt(Callback callback) : callback_(std::move(callback)), owner_(std::this_thread::get_id()) {}
+
+  // Whether to stop: on the thread that made this object, the callback's answer (once it
+  // said cancel, always); elsewhere, whether it has said cancel.
+  bool Stop() const {
+    if (callback_ && !cancelled_ && std::this_thread::get_id() == owner_ && !callback_()) cancelled_ = true;
+    return cancelled_;
+  }
+  bool Cancelled() const { return cancelled_; }
+
+ private:
+  Callback callback_;
+  std::thread::id owner_;
+  mutable std::atomic<bool> cancelled_{false};
+};
+
+} // namespace eulermap

@@ -1,0 +1,102 @@
+// Progress and Cancel on big grids (interrupt.h, pipeline.h): the progress callback comes
+// between bounded pieces of work (a conjugate-gradient iteration with its V-cycle, a slab
+// of a distance sweep), and a callback that says cancel ends the map at the next of them.
+// Counted in work, not in seconds: how often the callback comes per iteration and per node.
+#include "core/interrupt.h"
+#include "core/pipeline.h"
+#include "tests/support/meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <thread>
+
+using namespace eulermap;
+using namespace eulermap::testing;
+
+namespace {
+
+constexpr int kNodes = 64;  // per axis: 8 sweeps of 64^3 nodes are 8 times kNodesBetweenPolls
+
+struct Case {
+  Mesh source, target;
+  Options options;
+  Case() {
+    MakeSphere(source, Point3(0, 0, 0), 1, 3);
+    MakeSphere(target, Point3(0, 0, 0), 1.25, 3);
+    options.gridNodes = vcg::Point3i(kNodes, kNodes, kNodes);
+    options.steps = 4;
+    options.align = Align::None;
+  }
+};
+
+bool IsStep(const std::string &stage) { return stage.rfind("step ", 0) == 0; }
+
+TEST(Interrupt, ProgressComesBeforeEachSolverIterationAndEverySlabOfASweep) {
+  Case c;
+  std::map<std::string, int> calls;  // per stage
+  Result result;
+  ComputeMap(c.source, c.target, {}, c.options, result, [&](double, const std::string &stage) {
+    ++calls[stage];
+    return true;
+  });
+  ASSERT_TRUE(result.report.morphsTried.empty()) << "one morph: its steps are the only ones";
+  int stepCalls = 0;
+  for (const auto &[stage, n] : calls) stepCalls += IsStep(stage) ? n : 0;
+  EXPECT_GE(stepCalls, c.options.steps + result.report.solverFigures.totalIterations)
+      << "one call at each step and one before each of its iterations";
+  // The thread that called ComputeMap sweeps one of the two fields: 8 sweeps of every node,
+  // a call after at most kNodesBetweenPolls nodes and one plane.
+  const std::size_t nodes = std::size_t(kNodes) * kNodes * kNodes, plane = std::size_t(kNodes) * kNodes;
+  EXPECT_GE(std::size_t(calls["signed distance fields"]), 1 + 8 * nodes / (kNodesBetweenPolls + plane));
+}
+
+// Cancels at the n-th call of the first stage that `at` accepts; the map must throw Error
+// "cancelled" and make no call after that one.
+void ExpectCancelledAt(bool (*at)(const std::string &), int n) {
+  Case c;
+  int seen = 0, after = 0;
+  bool said = false;
+  Result result;
+  try {
+    ComputeMap(c.source, c.target, {}, c.options, result, [&](double, const std::string &stage) {
+      if (said) return ++after, false;
+      if (at(stage) && ++seen == n) said = true;
+      return !said;
+    });
+    ADD_FAILURE() << "the map ran to the end";
+  } catch (const Error &e) {
+    EXPECT_STREQ(e.what(), "cancelled");
+  }
+  EXPECT_TRUE(said);
+  EXPECT_EQ(after, 0) << "calls after the one that said cancel";
+}
+
+TEST(Interrupt, CancelInsideAVelocitySolveEndsTheMap) {
+  ExpectCancelledAt(IsStep, 2);  // the first iteration's poll of step 1
+}
+
+TEST(Interrupt, CancelInsideTheDistanceSweepsEndsTheMap) {
+  ExpectCancelledAt([](const std::string &stage) { return stage == "signed distance fields"; }, 2);
+}
+
+TEST(Interrupt, OnlyTheThreadThatMadeItAsksTheCallbackOthersReadTheAnswer) {
+  int asked = 0;
+  const Interrupt interrupt([&] { return ++asked < 2; });  // the second answer: cancel
+  auto elsewhere = [&] {
+    bool stop = false;
+    std::thread([&] { stop = interrupt.Stop(); }).join();
+    return stop;
+  };
+  EXPECT_FALSE(elsewhere());
+  EXPECT_EQ(asked, 0);
+  EXPECT_FALSE(interrupt.Stop());
+  EXPECT_TRUE(interrupt.Stop());
+  EXPECT_EQ(asked, 2);
+  EXPECT_TRUE(elsewhere());
+  EXPECT_TRUE(interrupt.Stop()) << "once cancel, always, without asking again";
+  EXPECT_EQ(asked, 2);
+}
+
+} // namespace
