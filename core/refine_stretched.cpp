@@ -73,7 +73,7 @@ int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit) {
 bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target) {
   const Point3 mid = (a + b) / 2;
   const ClosestHit hit = target.Query(mid);
-  return hit.face && hit.distance > kChordSag * vcg::Distance(a, b) && (mid - hit.point) * hit.face->cN() > 0;
+  return hit.face && hit.distance > kGapSag * vcg::Distance(a, b) && (mid - hit.point) * hit.face->cN() > 0;
 }
 
 int OpenTears(Mesh &cut, const ClosestPoint &target, double limit) {

@@ -28,12 +28,17 @@
 namespace eulermap {
 
 constexpr double kSplitCells = 2;  // an edge longer than this many grid cells on the target is split
-constexpr double kChordSag = 0.25;  // a chord this far from the target (per unit of its length) crosses a gap
+// A chord whose midpoint lies outside, this far from the target per unit of its length,
+// crosses a gap: across a gap between its lips the midpoint lies half the chord's length
+// away; across a right-angled concave corner (the rim of the hole between a chair's slats
+// where a slat meets the rail) at most 1 / (2 sqrt 2) = 0.354, and that chord follows the
+// target round the corner.
+constexpr double kGapSag = 0.4;
 
 int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit);
 
 // Whether the chord between images a and b crosses a gap: its midpoint lies outside the
-// target (on the side its nearest face's normal points to), more than kChordSag of the
+// target (on the side its nearest face's normal points to), more than kGapSag of the
 // chord's length away.
 bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target);
 

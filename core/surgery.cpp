@@ -25,6 +25,11 @@ namespace {
 
 constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
 constexpr double kOffLevelCells = 0.25;  // a tracked point this far off f = 0 has lost its level set
+// A tracked edge whose chord's midpoint lies this far outside per unit of its length is not
+// split. Below refine_stretched.h's kGapSag (the right-angled concave corner's 0.354): an
+// edge refused now can be split at a later step, and at 0.4 the points added around the
+// last holes of sphere -> ring4 at 64 cells changed its cut (11 loops for 8, 9 at 0.25).
+constexpr double kOutsideChordSag = 0.25;
 constexpr double kSpreadStretch = 2;  // edges stretched more than this (and long) are split anywhere
 constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
 constexpr double kTakesPartCells = 6;  // the tracked surface takes part in an event this near (+ hole radius)
@@ -404,12 +409,12 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
     // ring2 at 64 cells: 200 such points, and 30000 points added after them in 6 steps
     // until the budget ran out).
     auto onLevel = [&](int p) { return std::abs(fNext.Value(position[p])) <= kOffLevelCells * cell_; };
-    // Nor where the chord runs outside, more than kChordSag of its length off the surface:
-    // the ends lie on two rims of an opening that the cut did not reach (sphere -> ring3 at 64
-    // cells: the middle hole opens 6 steps before the end, and 30000 points landed on one
-    // end or the other of chords across it).
+    // Nor where the chord runs outside, more than kOutsideChordSag of its length off the
+    // surface: the ends lie on two rims of an opening that the cut did not reach (sphere ->
+    // ring3 at 64 cells: the middle hole opens 6 steps before the end, and 30000 points
+    // landed on one end or the other of chords across it).
     auto alongSurface = [&](int a, int b) {
-      return fNext.Value((position[a] + position[b]) / 2) <= kChordSag * vcg::Distance(position[a], position[b]);
+      return fNext.Value((position[a] + position[b]) / 2) <= kOutsideChordSag * vcg::Distance(position[a], position[b]);
     };
     std::unordered_map<std::uint64_t, int> midpoint;
     for (const Tri &t : tris_)
