@@ -14,6 +14,13 @@ suite=$1
 base="${EULERMAP_ROOTS:-/var/cache/eulermap/roots}"
 dir="$base/$suite"
 packages="meshlab,g++,make,cmake,ccache,libeigen3-dev,qtbase5-dev,libqt5opengl5-dev,libglew-dev,libgl1-mesa-dri,fonts-dejavu-core"
+# meshlab's Recommends, which a user's apt installs: without them MeshLab opens with a dialog
+# listing the plugins it could not load (their libraries missing).
+case "$suite" in
+  trixie) packages+=",lib3ds-1-3,libmuparser2v5,libopenctm1,libqhull-r8.0,libxerces-c3.2t64,libgmp10,libmpfr6" ;;
+  sid) packages+=",lib3ds-1-3,libmuparser2v5,libopenctm1,libqhull-r8.0" ;;
+  *) echo "error: unknown suite '$suite' (trixie or sid)" >&2; exit 1 ;;
+esac
 stamp="$dir/.eulermap-root"
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$suite $packages" ]; then
   echo "$dir"; exit 0

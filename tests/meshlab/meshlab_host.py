@@ -173,6 +173,51 @@ def bad_inputs(tmp):
     ]
 
 
+GUI_SESSION = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_session.sh")
+
+
+def gui_session(samples, shots, outdir, layout="2020.09", meshlab=None, grid=24, steps=8, export=None, drive=True):
+    """One MeshLab GUI session (gui_session.sh) under xvfb-run on a 1280x960 screen: MeshLab
+    (the command `meshlab`, e.g. one that starts it inside a Debian root) opens the torus and
+    the sphere of `samples` (the folder as MeshLab sees it); with `drive`, xdotool applies
+    the filter from the Filters menu at `grid` and `steps` as the `layout` of that MeshLab
+    version places its menus and dialogs, and with `export` (a path as MeshLab sees it) the
+    cut layer is saved from File > Export Mesh As. Screenshots go to `shots`, MeshLab's
+    output to outdir/meshlab.out. Returns (the session's CompletedProcess, MeshLab's output)."""
+    os.makedirs(shots, exist_ok=True)
+    for old in glob.glob(os.path.join(shots, "meshlab_*.png")):
+        os.remove(old)
+    os.makedirs(outdir, exist_ok=True)
+    env = dict(os.environ, GRID=str(grid), STEPS=str(steps))
+    if meshlab:
+        env["MESHLAB"] = meshlab
+    if export:
+        env["EXPORT"] = export
+    p = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x960x24", "bash", GUI_SESSION, samples, shots, outdir,
+                        "1" if drive else "0", layout], capture_output=True, text=True, timeout=600, env=env)
+    out = os.path.join(outdir, "meshlab.out")
+    return p, (open(out, errors="replace").read() if os.path.exists(out) else "")
+
+
+def layout_value(layout, name):
+    """A value of gui_layout_<layout>.sh (e.g. VIEW_BOX), as the shell reads it."""
+    path = os.path.join(os.path.dirname(GUI_SESSION), f"gui_layout_{layout}.sh")
+    return subprocess.run(["bash", "-c", f'. "$0"; echo "${{{name}}}"', path], capture_output=True, text=True,
+                          check=True).stdout.strip()
+
+
+def checker_shares(png, box):
+    """(blue, white) shares of the pixels of `png` inside box (x0, y0, x1, y1): the torus's
+    checker (#3070c0 and white, lit or in shade) as MeshLab draws it on a blue-grey background
+    (where G = R, so not counted as the checker's blue)."""
+    width, height, rgb = read_png(png)
+    x0, y0, x1, y1 = box
+    px = [rgb[3 * (y * width + x):3 * (y * width + x) + 3] for x in range(x0, x1, 2) for y in range(y0, y1, 2)]
+    blue = sum(c[2] > c[0] + 60 and c[1] > c[0] + 30 for c in px) / len(px)
+    white = sum(min(c) > 150 and max(c) - min(c) < 30 for c in px) / len(px)
+    return blue, white
+
+
 def note(text):
     """A line of figures in the test's output."""
     print("    " + text, flush=True)
