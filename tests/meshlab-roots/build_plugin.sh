@@ -10,6 +10,7 @@ cmake -S /src -B /build -DCMAKE_BUILD_TYPE=Release -DEULERMAP_BUILD_TESTS=OFF \
   -DEULERMAP_MESHLAB_2020_SOURCE=/src/.deps/meshlab-2020.09+dfsg1 -DEULERMAP_MESHLAB_SYSTEM_SOURCE="$tree" \
   -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/build/configure.log 2>&1 || { cat /build/configure.log; exit 1; }
 grep -- '-- filter_eulermap_system:' /build/configure.log
+ccache -z >/dev/null
 cmake --build /build --target filter_eulermap_system -j 2
 cmake --install /build
 ccache -s | grep -iE '^ *(hits|misses|cache hit)' || true

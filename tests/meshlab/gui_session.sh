@@ -52,8 +52,8 @@ field "$STEPS_FIELD" "${STEPS:-8}"
 sleep 0.5
 shot 3_parameters
 click "$APPLY" 0
-for _ in $(seq 300); do
-  grep -q "Applied filter Eulerian Surface Map\|Filter failed\|Eulerian Surface Map failed" "$outdir/meshlab.out" && break
+for _ in $(seq 120); do
+  grep -q "Applied filter:\? Eulerian Surface Map\|Filter failed\|Eulerian Surface Map failed" "$outdir/meshlab.out" && break
   kill -0 $pid 2>/dev/null || break
   sleep 1
 done
