@@ -54,7 +54,8 @@ def tail(p, n=1500):
 
 @pytest.mark.parametrize("suite, source, version, module", SUITES, ids=IDS)
 def test_root(suite, source, version, module):
-    p, seconds = run(["bash", "setup/debian-root.sh", suite])
+    # tests/run starts this in the background (log in out/roots/); then this waits for it
+    p, seconds = run(["bash", "setup/debian-root.sh", suite], timeout=1800)
     check(p.returncode == 0, f"the {suite} root could not be built (setup/debian-root.sh {suite}, "
                              f"exit {p.returncode}):\n{tail(p)}")
     root = p.stdout.strip().splitlines()[-1]
@@ -63,8 +64,13 @@ def test_root(suite, source, version, module):
     check(have.startswith(source), f"the {suite} root has meshlab {have!r}, expected {source}*")
     size = subprocess.run(["du", "-sh", root], capture_output=True, text=True).stdout.split()[0]
     built = re.search(r"root built in (\d+) s", p.stderr)
-    note(f"{suite} root: meshlab {have}, {size} in {root}; "
-         + (f"built now in {built.group(1)} s" if built else f"reused ({seconds:.1f} s)"))
+    logs = os.environ.get("EULERMAP_ROOT_LOGS")  # set by tests/run, which started the build
+    background = os.path.join(logs, suite + ".log") if logs else ""
+    earlier = re.search(r"root built in (\d+) s", open(background).read()) if os.path.isfile(background) else None
+    how = (f"built now in {built.group(1)} s" if built else
+           f"built in the background by tests/run in {earlier.group(1)} s, waited {seconds:.0f} s" if earlier else
+           f"reused ({seconds:.1f} s)")
+    note(f"{suite} root: meshlab {have}, {size} in {root}; {how}")
     STATE[suite] = {"root": root}
 
 
@@ -129,3 +135,31 @@ def test_gui(suite, source, version, module):
     check(rate >= 0.99, f"only {100 * rate:.2f}% of the cut layer's TargetPosition lie on the torus")
     check(blue > 0.05 and white > 0.05, f"the cut layer is not drawn with the torus's checker in MeshLab {version} "
                                         f"({shots}/meshlab_6_cut_only.png)")
+
+
+@pytest.mark.parametrize("suite, source, version, module", SUITES[1:], ids=IDS[1:])
+def test_user_plugin_folder(suite, source, version, module):
+    """The way Flathub and AppImage users of MeshLab 2025.07 install it (their MeshLab's own
+    folder is read-only): the module alone in the per-user folder MeshLab also loads plugins
+    from, ~/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/2025.07/
+    (MeshLabApplication::extraPluginsLocation()), none in the system folder; the filter is
+    applied from the Filters menu (grid 24, 8 steps)."""
+    check(STATE.get(suite, {}).get("built"), f"no plugin built in the {suite} root (see test_plugin_built[{suite}])")
+    root = STATE[suite]["root"]
+    system = os.path.join(root, PLUGINS, module)
+    folder = f"~/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/{version}/"
+    user_dir = os.path.join(root, "root", folder[2:])
+    os.makedirs(user_dir, exist_ok=True)
+    user = os.path.join(user_dir, module)
+    os.replace(system, user)
+    try:
+        outdir = os.path.join(ROOT, "out", "meshlab-roots", suite + "-user")
+        p, log = gui_session("/src/samples", os.path.join(ROOT, "out", "screenshots", suite + "-user"), outdir,
+                             layout=version, meshlab=f"{IN_ROOT} {root} meshlab")
+    finally:
+        os.replace(user, system)  # back where cmake --install put it
+    check(p.returncode == 0, f"GUI session failed ({p.returncode}): {(p.stdout + p.stderr)[-600:]}")
+    check("PLUGIN_LOADED" in p.stdout, f"MeshLab {version} did not load {module} from {folder}")
+    check(re.search(r"Applied filter:? Eulerian Surface Map", log) and "new layer sphere_cut" in log,
+          f"the filter, loaded from {folder}, was not applied from the Filters menu:\n{log[-800:]}")
+    note(f"{suite}: MeshLab {version} loaded {module} from {folder} and applied it from the Filters menu")
