@@ -25,12 +25,17 @@ stamp="$dir/.eulermap-root"
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$suite $packages" ]; then
   echo "$dir"; exit 0
 fi
-if ! command -v mmdebstrap >/dev/null; then
-  echo "== installing Debian's mmdebstrap" >&2
-  apt-get update -q >&2
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -q mmdebstrap >&2
-fi
 mkdir -p "$base"
+if ! command -v mmdebstrap >/dev/null; then  # setup/build.sh installs it; this is for a bare machine
+  (
+    flock 8
+    if ! command -v mmdebstrap >/dev/null; then
+      echo "== installing Debian's mmdebstrap" >&2
+      apt-get update -q >&2
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -q mmdebstrap >&2
+    fi
+  ) 8>"$base/.mmdebstrap.lock"
+fi
 # One build of a root at a time (tests/run and a developer's shell may both ask).
 exec 9>"$base/.$suite.lock"
 flock 9

@@ -18,6 +18,7 @@ Run with tests/meshlab-roots/run [-k trixie] (pytest; a stage of tests/run). For
     alone with the torus's checker. Screenshots in out/screenshots/SUITE/.
 A root or a build that cannot be made fails its test with the tool's own words.
 """
+import fcntl
 import os
 import re
 import subprocess
@@ -40,6 +41,17 @@ IDS = [s[0] for s in SUITES]
 PLUGINS = "usr/lib/x86_64-linux-gnu/meshlab/plugins"
 IN_ROOT = os.path.join(HERE, "in_root.sh")
 STATE = {}  # suite -> {"root": path, "built": True}
+
+
+@pytest.fixture(scope="module", autouse=True)
+def roots_to_ourselves():
+    """One run of these tests at a time on a machine: each installs its own build into the
+    roots (and test_user_plugin_folder moves it for a while), which other clones' runs share."""
+    base = os.environ.get("EULERMAP_ROOTS", "/var/cache/eulermap/roots")
+    os.makedirs(base, exist_ok=True)
+    with open(os.path.join(base, ".gui-tests.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield
 
 
 def run(cmd, timeout=3600):
