@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Builds (once per machine) a minimal Debian root with Debian's own mmdebstrap, in which
-# Debian's `meshlab` of that suite is installed together with what building the plugin's
-# flavour needs there (a compiler, cmake, Eigen, Qt 5's headers) and nothing else
-# (--variant=minbase: no Recommends, no documentation, no apt lists or .deb cache kept).
+# Debian's `meshlab` of that suite is installed with the libraries it recommends, together
+# with what building the plugin's flavour needs there (a compiler, cmake, ccache, Eigen, Qt 5's
+# and GLEW's headers) and nothing else (--variant=minbase, no other Recommends, no
+# documentation, no apt lists or .deb cache kept). A sid root holds sid as it was the day it
+# was built, until its package list here changes.
 # The GUI tests (tests/meshlab-roots/) run that MeshLab inside it.
 # Usage: setup/debian-root.sh SUITE      SUITE: trixie (MeshLab 2022.02) or sid (MeshLab 2025.07)
 # The root is /var/cache/eulermap/roots/SUITE (EULERMAP_ROOTS=DIR for another place: it lives
@@ -51,8 +53,8 @@ fi
 rm -rf --one-file-system "$dir" "$dir.partial"
 echo "== building the $suite root in $dir with mmdebstrap (once per machine)" >&2
 start=$SECONDS
-# Debian's archive keys as the machine has them (bookworm's debian-archive-keyring holds
-# trixie's; sid is signed with the same keys). Check-Valid-Until off: the mirror this
+# Debian's archive keys as the machine has them (bookworm's debian-archive-keyring verifies
+# trixie's and sid's Release files). Check-Valid-Until off: the mirror this
 # machine reaches may serve a sid Release older than its Valid-Until allows (apt then says
 # "Release file ... is expired"); the signature is still checked.
 mmdebstrap --mode=root --variant=minbase --include="$packages" \
