@@ -8,7 +8,7 @@
 set -euo pipefail
 tree=/src/.deps/$1
 cmake -S /src -B /build -DCMAKE_BUILD_TYPE=Release -DEULERMAP_BUILD_TESTS=OFF \
-  -DEULERMAP_MESHLAB_2020_SOURCE=/src/.deps/meshlab-2020.09+dfsg1 -DEULERMAP_MESHLAB_SYSTEM_SOURCE="$tree" \
+  -DEULERMAP_MESHLAB_SYSTEM_SOURCE="$tree" \
   -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 \
   -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/build/configure.log 2>&1 || { cat /build/configure.log; exit 1; }
 grep -- '-- filter_eulermap_system:' /build/configure.log
