@@ -29,8 +29,8 @@ import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "meshlab"))
-import meshes  # noqa: E402
-from meshlab_host import ROOT, SAMPLES, check, checker_shares, gui_session, layout_value, note  # noqa: E402
+from meshlab_host import (ROOT, SAMPLES, check, checker_shares, gui_session, layout_value, measure_cut,  # noqa: E402
+                          note)
 
 # (suite, Debian source version of its meshlab, MeshLab's version string, the module's name)
 SUITES = [
@@ -132,12 +132,7 @@ def test_gui(suite, source, version, module):
     check("new layer sphere_cut" in log and "new layer sphere_mapped" in log, "the filter made no layers")
     check("ALIVE_AFTER_FILTER" in p.stdout, f"MeshLab {version} did not survive the filter run")
     check(os.path.isfile(cut), f"File > Export Mesh As wrote no {cut}; see meshlab_7_export_options.png")
-    c = meshes.read_mesh(cut)
-    check("TargetPosition" in c.vertex, "the exported cut layer has no TargetPosition")
-    torus = meshes.read_mesh(os.path.join(SAMPLES, "torus.ply"))
-    images = [tuple(x) for x in c.vertex["TargetPosition"]]
-    rate = meshes.on_surface_rate(images, torus, 0.005 * meshes.diagonal(torus.verts))
-    topo = meshes.topology(c)
+    c, topo, rate = measure_cut(cut, os.path.join(SAMPLES, "torus.ply"))
     box = tuple(int(v) for v in layout_value(version, "VIEW_BOX").split())
     blue, white = checker_shares(os.path.join(shots, "meshlab_6_cut_only.png"), box)
     note(f"{suite} GUI (MeshLab {version}): {seconds:.0f} s; cut {len(c.verts)} v {len(c.faces)} f, "

@@ -1,12 +1,15 @@
 """What the MeshLab 2020.09 tests (test_meshlab.py), the pymeshlab tests and the bad-input
 corpus share: paths, the sample runs and their expectations, complete .mlx scripts from the
-core's parameter table, running meshlabserver and reading its log, the bad inputs.
+core's parameter table, running meshlabserver and reading its log, the bad inputs, and the
+GUI sessions of every MeshLab version (gui_session.sh) with what they measure.
 """
 import glob
 import hashlib
 import os
 import re
 import subprocess
+
+import meshes
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 SAMPLES = os.path.join(ROOT, "samples")
@@ -216,6 +219,21 @@ def checker_shares(png, box):
     blue = sum(c[2] > c[0] + 60 and c[1] > c[0] + 30 for c in px) / len(px)
     white = sum(min(c) > 150 and max(c) - min(c) < 30 for c in px) / len(px)
     return blue, white
+
+
+def measure_cut(cut_ply, target_ply):
+    """A cut layer saved from the GUI with its TargetPosition: (mesh, (components, boundary
+    loops, Euler characteristic), share of the images within 0.5% of the target's diagonal
+    from the target). MeshLab 2020.09 writes TargetPosition as three properties
+    TargetPosition_x/_y/_z, 2022.02 and 2025.07 as one list property."""
+    c, target = meshes.read_mesh(cut_ply), meshes.read_mesh(target_ply)
+    if "TargetPosition" in c.vertex:
+        images = [tuple(x) for x in c.vertex["TargetPosition"]]
+    else:
+        check(all(f"TargetPosition_{k}" in c.vertex for k in "xyz"), f"{cut_ply} has no TargetPosition")
+        images = list(zip(*(c.vertex[f"TargetPosition_{k}"] for k in "xyz")))
+    rate = meshes.on_surface_rate(images, target, 0.005 * meshes.diagonal(target.verts))
+    return c, meshes.topology(c), rate
 
 
 def note(text):
