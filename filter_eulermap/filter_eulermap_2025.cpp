@@ -5,6 +5,15 @@
 
 #include <common/mlexception.h>
 
+// MeshLab 2022.02 names the open-file parameter RichOpenFile (common/parameters/rich_parameter.h);
+// 2025.07 renamed it RichFileOpen, with the same arguments, in a header of its own. The rest of
+// the FilterPlugin interface this shim uses is the same in both.
+#if __has_include(<common/parameters/rich_parameter/rich_file_open.h>)
+using OpenFileParameter = RichFileOpen;
+#else
+using OpenFileParameter = RichOpenFile;
+#endif
+
 #include <algorithm>
 
 using namespace eulermap::plugin;
@@ -74,7 +83,7 @@ RichParameterList FilterEulermapPlugin::initParameterList(const QAction *, const
         return RichMesh(Name(p), Name(p) == eulermap::parameter::kSourceMesh ? current : DefaultTargetLayer(current, layers), &md,
                         Label(p), Help(p));
       },
-      [](const eulermap::Parameter &p) { return RichFileOpen(Name(p), QString(), Choices(p), Label(p), Help(p)); });
+      [](const eulermap::Parameter &p) { return OpenFileParameter(Name(p), QString(), Choices(p), Label(p), Help(p)); });
   return parameters;
 }
 

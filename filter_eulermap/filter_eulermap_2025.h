@@ -1,9 +1,11 @@
-// The MeshLab 2025.07 flavour of the filter: FilterPlugin
-// (common/plugins/interfaces/filter_plugin.h of Debian's meshlab 2025.07~dfsg), as PyPI's
-// pymeshlab 2025.7.post1 loads it with pymeshlab.load_plugin(). Only the talk with MeshLab
-// lives here: declaring the parameters from parameters.h as RichParameters, reading them
-// back, the document's layers by id, progress, log, errors as MLException and the report's
-// figures as return values. The work is run_on_layers.h's.
+// The MeshLab 2025.07 and 2022.02 flavours of the filter: FilterPlugin
+// (common/plugins/interfaces/filter_plugin.h of Debian's meshlab 2025.07~dfsg and
+// 2022.02+dfsg1, the same interface), as PyPI's pymeshlab 2025.7.post1 loads it with
+// pymeshlab.load_plugin() and the MeshLab 2022.02 and 2025.07 GUIs from their plugin
+// folders. Only the talk with MeshLab lives here: declaring the parameters from
+// parameters.h as RichParameters, reading them back, the document's layers by id, progress,
+// log, errors as MLException and the report's figures as return values. The work is
+// run_on_layers.h's.
 #pragma once
 
 #include <common/plugins/interfaces/filter_plugin.h>

@@ -11,7 +11,7 @@ cd "$root"
 
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev qtbase5-dev libqt5opengl5-dev
           libqt5xmlpatterns5-dev libglew-dev libgtest-dev googletest meshlab xvfb xauth dpkg-dev
-          python3 python3-venv imagemagick xdotool)
+          python3 python3-venv imagemagick xdotool mmdebstrap)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

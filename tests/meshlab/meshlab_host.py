@@ -1,12 +1,15 @@
 """What the MeshLab 2020.09 tests (test_meshlab.py), the pymeshlab tests and the bad-input
 corpus share: paths, the sample runs and their expectations, complete .mlx scripts from the
-core's parameter table, running meshlabserver and reading its log, the bad inputs.
+core's parameter table, running meshlabserver and reading its log, the bad inputs, and the
+GUI sessions of every MeshLab version (gui_session.sh) with what they measure.
 """
 import glob
 import hashlib
 import os
 import re
 import subprocess
+
+import meshes
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 SAMPLES = os.path.join(ROOT, "samples")
@@ -171,6 +174,66 @@ def bad_inputs(tmp):
         ("grid_out_of_range", [sphere, torus], dict(small, grid_resolution=2), "grid_resolution 2 is out of range"),
         ("grid_too_large_for_memory", [sphere, torus], dict(small, grid_resolution=2000), "lower grid_resolution"),
     ]
+
+
+GUI_SESSION = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_session.sh")
+
+
+def gui_session(samples, shots, outdir, layout="2020.09", meshlab=None, grid=24, steps=8, export=None, drive=True):
+    """One MeshLab GUI session (gui_session.sh) under xvfb-run on a 1280x960 screen: MeshLab
+    (the command `meshlab`, e.g. one that starts it inside a Debian root) opens the torus and
+    the sphere of `samples` (the folder as MeshLab sees it); with `drive`, xdotool applies
+    the filter from the Filters menu at `grid` and `steps` as the `layout` of that MeshLab
+    version places its menus and dialogs, and with `export` (a path as MeshLab sees it) the
+    cut layer is saved from File > Export Mesh As. Screenshots go to `shots`, MeshLab's
+    output to outdir/meshlab.out. Returns (the session's CompletedProcess, MeshLab's output)."""
+    os.makedirs(shots, exist_ok=True)
+    for old in glob.glob(os.path.join(shots, "meshlab_*.png")):
+        os.remove(old)
+    os.makedirs(outdir, exist_ok=True)
+    env = dict(os.environ, GRID=str(grid), STEPS=str(steps))
+    if meshlab:
+        env["MESHLAB"] = meshlab
+    if export:
+        env["EXPORT"] = export
+    p = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x960x24", "bash", GUI_SESSION, samples, shots, outdir,
+                        "1" if drive else "0", layout], capture_output=True, text=True, timeout=600, env=env)
+    out = os.path.join(outdir, "meshlab.out")
+    return p, (open(out, errors="replace").read() if os.path.exists(out) else "")
+
+
+def layout_value(layout, name):
+    """A value of gui_layout_<layout>.sh (e.g. VIEW_BOX), as the shell reads it."""
+    path = os.path.join(os.path.dirname(GUI_SESSION), f"gui_layout_{layout}.sh")
+    return subprocess.run(["bash", "-c", f'. "$0"; echo "${{{name}}}"', path], capture_output=True, text=True,
+                          check=True).stdout.strip()
+
+
+def checker_shares(png, box):
+    """(blue, white) shares of the pixels of `png` inside box (x0, y0, x1, y1): the torus's
+    checker (#3070c0 and white, lit or in shade) as MeshLab draws it on a blue-grey background
+    (where G = R, so not counted as the checker's blue)."""
+    width, height, rgb = read_png(png)
+    x0, y0, x1, y1 = box
+    px = [rgb[3 * (y * width + x):3 * (y * width + x) + 3] for x in range(x0, x1, 2) for y in range(y0, y1, 2)]
+    blue = sum(c[2] > c[0] + 60 and c[1] > c[0] + 30 for c in px) / len(px)
+    white = sum(min(c) > 150 and max(c) - min(c) < 30 for c in px) / len(px)
+    return blue, white
+
+
+def measure_cut(cut_ply, target_ply):
+    """A cut layer saved from the GUI with its TargetPosition: (mesh, (components, boundary
+    loops, Euler characteristic), share of the images within 0.5% of the target's diagonal
+    from the target). MeshLab 2020.09 writes TargetPosition as three properties
+    TargetPosition_x/_y/_z, 2022.02 and 2025.07 as one list property."""
+    c, target = meshes.read_mesh(cut_ply), meshes.read_mesh(target_ply)
+    if "TargetPosition" in c.vertex:
+        images = [tuple(x) for x in c.vertex["TargetPosition"]]
+    else:
+        check(all(f"TargetPosition_{k}" in c.vertex for k in "xyz"), f"{cut_ply} has no TargetPosition")
+        images = list(zip(*(c.vertex[f"TargetPosition_{k}"] for k in "xyz")))
+    rate = meshes.on_surface_rate(images, target, 0.005 * meshes.diagonal(target.verts))
+    return c, meshes.topology(c), rate
 
 
 def note(text):

@@ -36,8 +36,9 @@ import pytest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import meshes  # noqa: E402
 from meshlab_host import (BUILT, CRASH_CODES, FILTER, OUT, PLUGIN, ROOT, SAMPLE_RUNS, SAMPLES, SHOTS,  # noqa: E402
-                          bad_inputs, build_id, check, failure_message, filter_log, meshlabserver, mlx_text, note,
-                          plugin_parameter_names, quick_map, read_png, sample_checksums, sha256, write_file)
+                          bad_inputs, build_id, check, checker_shares, failure_message, filter_log, gui_session,
+                          layout_value, measure_cut, meshlabserver, mlx_text, note, plugin_parameter_names, quick_map, read_png,
+                          sample_checksums, sha256, write_file)
 
 INITIAL_CHECKSUMS = sample_checksums()  # test_inputs_unchanged, last, compares with them
 BAD_DIR = tempfile.mkdtemp(prefix="eulermap-meshlab-")
@@ -277,18 +278,15 @@ def test_bad_input(name, inputs, values, expected):
 
 def test_gui():
     """meshlab under Xvfb: the plugin is loaded into the process; with xdotool, the filter
-    is run from Filters > Remeshing (torus -> sphere, grid 24, 8 steps) and the layers it
-    makes appear; screenshots in out/screenshots/."""
-    os.makedirs(SHOTS, exist_ok=True)
-    for old in glob.glob(os.path.join(SHOTS, "meshlab_*.png")):
-        os.remove(old)
-    outdir = os.path.join(OUT, "gui")
-    os.makedirs(outdir, exist_ok=True)
+    is run from Filters > Remeshing (sphere -> torus, grid 24, 8 steps), the layers it makes
+    appear, and the cut layer, saved from File > Export Mesh As with its TargetPosition, is
+    one component with 2 boundary loops and Euler characteristic 0 whose images lie on the
+    torus; screenshots in out/screenshots/."""
     have_xdotool = shutil.which("xdotool") is not None
-    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "gui_session.sh")
-    p = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x960x24", "bash", script, SAMPLES, SHOTS, outdir,
-                        "1" if have_xdotool else "0"], capture_output=True, text=True, timeout=600)
-    log = open(os.path.join(outdir, "meshlab.out"), errors="replace").read()
+    cut = os.path.join(OUT, "gui", "sphere_cut.ply")
+    if os.path.exists(cut):
+        os.remove(cut)
+    p, log = gui_session(SAMPLES, SHOTS, os.path.join(OUT, "gui"), drive=have_xdotool, export=cut)
     check(p.returncode == 0, f"GUI session failed ({p.returncode}): {(p.stdout + p.stderr)[-600:]}")
     check("PLUGIN_LOADED" in p.stdout, "meshlab did not load libfilter_eulermap.so (not in /proc/PID/maps)")
     shots = sorted(glob.glob(os.path.join(SHOTS, "meshlab_*.png")))
@@ -299,15 +297,19 @@ def test_gui():
     check("new layer sphere_cut" in log and "new layer sphere_mapped" in log,
           "the filter run from Filters > Remeshing > Eulerian Surface Map made no layers; see the screenshots")
     check("ALIVE_AFTER_FILTER" in p.stdout, "meshlab did not survive the filter run")
-    # The cut sphere alone in the 3D view (x < 430, 70 < y < 585 of the 1280x960 screen):
-    # drawn with the torus's checker, so the GUI loaded the new layer's texture image.
-    width, height, rgb = read_png(os.path.join(SHOTS, "meshlab_6_cut_only.png"))
-    px = [rgb[3 * (y * width + x):3 * (y * width + x) + 3] for x in range(0, 430, 2) for y in range(70, 585, 2)]
-    blue = sum(c[2] > c[0] + 60 and c[1] > c[0] + 30 for c in px) / len(px)  # not the background: G = R there
-    white = sum(min(c) > 150 and max(c) - min(c) < 30 for c in px) / len(px)
+    # The cut sphere alone in the 3D view: drawn with the torus's checker, so the GUI loaded
+    # the new layer's texture image.
+    box = tuple(int(v) for v in layout_value("2020.09", "VIEW_BOX").split())
+    blue, white = checker_shares(os.path.join(SHOTS, "meshlab_6_cut_only.png"), box)
     note(f"GUI: the cut sphere alone: {100 * blue:.1f}% checker blue, {100 * white:.1f}% white/grey of the 3D view")
     check(blue > 0.05 and white > 0.05, "the cut layer is not drawn with the torus's checker in the GUI "
                                         "(meshlab_6_cut_only.png)")
+    check(os.path.isfile(cut), f"File > Export Mesh As wrote no {cut}; see meshlab_7_export_options.png")
+    c, topo, rate = measure_cut(cut, os.path.join(SAMPLES, "torus.ply"))
+    note(f"GUI: cut {len(c.verts)} v {len(c.faces)} f, components/loops/chi {topo}; images on the torus "
+         f"{100 * rate:.2f}%")
+    check(topo == (1, 2, 0), f"cut layer: components, boundary loops, Euler characteristic {topo}, expected (1, 2, 0)")
+    check(rate >= 0.99, f"only {100 * rate:.2f}% of the cut layer's TargetPosition lie on the torus")
     note("GUI: screenshots " + ", ".join(os.path.relpath(s, ROOT) for s in shots))
 
 

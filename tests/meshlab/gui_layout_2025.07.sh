@@ -1,0 +1,18 @@
+# Where MeshLab 2025.07 (Debian sid's meshlab 2025.07~dfsg-4 in the sid root, with the
+# plugins of its Recommends) draws what gui_session.sh clicks: x y on the 1280x960 Xvfb
+# screen, its window at the top left. CUT_LAYER_NAME: the sphere_cut row of the layer
+# dialog; EXPORT_TARGET_POSITION: the TargetPosition box of the PLY save options. VIEW_BOX:
+# the 3D view (x0 y0 x1 y1) the tests measure the cut layer's drawing in.
+FILTERS_MENU="116 10"
+SUBMENU_APPROACH="200 148"
+SUBMENU="262 148"
+ENTRY_APPROACH="520 148"
+ENTRY="573 235"
+GRID_FIELD="509 333"
+STEPS_FIELD="509 362"
+APPLY="551 783"
+CLOSE="300 783"
+HIDE_EYES=("449 111" "449 142" "449 205")
+CUT_LAYER_NAME="521 173"
+EXPORT_TARGET_POSITION="426 419"
+VIEW_BOX="10 75 400 605"
