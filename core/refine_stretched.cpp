@@ -18,6 +18,12 @@ using Pos = vcg::face::Pos<Face>;
 // sides of a thin part -1).
 constexpr double kOppositeCosine = -0.5;
 
+// AcrossGap, with the target's point nearest the chord's midpoint already found.
+bool GapAt(const Point3 &a, const Point3 &b, const ClosestHit &atMid) {
+  return atMid.face && atMid.distance > kGapSag * vcg::Distance(a, b) &&
+         ((a + b) / 2 - atMid.point) * atMid.face->cN() > 0;
+}
+
 // Which edges are split: mapped longer than the limit, along the target (see the header).
 struct Stretched {
   Handle &image;  // vcglib's handles read through a non-const operator[]
@@ -28,7 +34,7 @@ struct Stretched {
     const double length = vcg::Distance(a, b);
     if (length <= limit) return false;
     const ClosestHit atA = target.Query(a), atB = target.Query(b), atMid = target.Query((a + b) / 2);
-    if (!atA.face || !atB.face || !atMid.face || AcrossGap(a, b, target)) return false;
+    if (!atA.face || !atB.face || !atMid.face || GapAt(a, b, atMid)) return false;
     const Point3 &na = atA.face->cN(), &nb = atB.face->cN(), &nm = atMid.face->cN();
     return na * nb > kOppositeCosine && nm * na > kOppositeCosine && nm * nb > kOppositeCosine;
   }
@@ -71,9 +77,7 @@ int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit) {
 }
 
 bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target) {
-  const Point3 mid = (a + b) / 2;
-  const ClosestHit hit = target.Query(mid);
-  return hit.face && hit.distance > kGapSag * vcg::Distance(a, b) && (mid - hit.point) * hit.face->cN() > 0;
+  return GapAt(a, b, target.Query((a + b) / 2));
 }
 
 int OpenTears(Mesh &cut, const ClosestPoint &target, double limit) {
