@@ -10,8 +10,11 @@
 //   eulermap_bench vertices S                               sphere of S subdivisions -> ellipsoid, 64 cells
 //   eulermap_bench soup S                                   sphere of S subdivisions -> torus, 64 cells, welded
 //                                                           and as a triangle soup (every face its own vertices)
-//   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N]
-//   options of every mode: --alpha A --anchor-weight B (velocity.h)
+//   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N] [--images FILE]
+//                                                           FILE: a line per source vertex, its image on the
+//                                                           target "x y z 1", or "x y z 0" where surgery removed
+//                                                           it (the image of the nearest kept vertex)
+//   options of every mode: --alpha A --anchor-weight B --anchor-radius R (velocity.h) --align none|centre
 //   eulermap_bench header                                   the header of the table `row` and `grid` print
 //   eulermap_bench mlx [NAME=VALUE ...]                     a complete meshlabserver script of the filter
 //                                                           (core/parameters.h; defaults for the rest)
@@ -31,6 +34,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <tuple>
 #include <string>
 
 using namespace eulermap;
@@ -94,6 +98,38 @@ void PrintRow(const std::string &name, const Report &r, double paperTotal) {
 }
 
 // "name=value" arguments from argv[first] on.
+const char *StringFlag(int argc, char **argv, const char *name) {
+  for (int i = 0; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], name)) return argv[i + 1];
+  return nullptr;
+}
+
+// Each source vertex's image (TargetPosition of the cut vertex at its position; the cut
+// keeps the source's positions), for the correspondence benchmark (tests/bench/topkids.py).
+void WriteImages(const Mesh &source, Result &result, const char *path) {
+  std::map<std::tuple<double, double, double>, int> kept;
+  for (std::size_t n = 0; n < result.cut.vert.size(); ++n) {
+    const Point3 &p = result.cut.vert[n].cP();
+    kept.emplace(std::make_tuple(p.X(), p.Y(), p.Z()), int(n));
+  }
+  auto image = vcg::tri::Allocator<Mesh>::FindPerVertexAttribute<Point3>(result.cut, "TargetPosition");
+  FILE *out = std::fopen(path, "w");
+  if (!out) throw std::runtime_error(std::string("cannot write ") + path);
+  for (const Vertex &v : source.vert) {
+    const Point3 &p = v.cP();
+    auto found = kept.find(std::make_tuple(p.X(), p.Y(), p.Z()));
+    int n = found == kept.end() ? -1 : found->second;
+    if (n < 0) {
+      double nearest = 1e300;
+      for (std::size_t c = 0; c < result.cut.vert.size(); ++c)
+        if (const double d = vcg::SquaredDistance(result.cut.vert[c].cP(), p); d < nearest) nearest = d, n = int(c);
+    }
+    const Point3 &q = image[n];
+    std::fprintf(out, "%.9g %.9g %.9g %d\n", q.X(), q.Y(), q.Z(), found != kept.end());
+  }
+  std::fclose(out);
+}
+
 std::map<std::string, std::string> Assignments(int argc, char **argv, int first) {
   std::map<std::string, std::string> values;
   for (int i = first; i < argc; ++i) {
@@ -121,9 +157,11 @@ Options OptionsFrom(int argc, char **argv) {
   Options o;
   o.alpha = FlagValue(argc, argv, "--alpha", o.alpha);
   o.anchorWeight = FlagValue(argc, argv, "--anchor-weight", o.anchorWeight);
+  o.anchorRadius = FlagValue(argc, argv, "--anchor-radius", o.anchorRadius);
   o.threads = Flag(argc, argv, "--threads", 0);
   o.gridResolution = Flag(argc, argv, "--grid", o.gridResolution);
   o.steps = Flag(argc, argv, "--steps", o.steps);
+  if (const char *align = StringFlag(argc, argv, "--align")) o.align = std::strcmp(align, "none") ? Align::CentreAndScale : Align::None;
   for (int i = 0; i + 1 < argc; ++i)
     if (!std::strcmp(argv[i], "--solver")) {
       const std::string s = argv[i + 1];
@@ -286,6 +324,7 @@ int main(int argc, char **argv) {
       if (argc > 5 && argv[4][0] != '-') anchors = ReadAnchorPairs(argv[4], argv[5]);
       ComputeMap(source, target, anchors, options, result);
       std::printf("%s", result.report.ToText().c_str());
+      if (const char *images = StringFlag(argc, argv, "--images")) WriteImages(source, result, images);
     } else {
       std::fprintf(stderr, "unknown mode %s\n", mode.c_str());
       return 2;
