@@ -18,11 +18,7 @@
 namespace eulermap {
 namespace {
 
-using testing::BoxSignedDistance;
-using testing::DataMesh;
-using testing::LoadMesh;
-using testing::MakeBox;
-using testing::MakeSphere;
+using namespace eulermap::testing;  // the meshes and the box's distance of tests/support
 
 TEST(ClosestPoint, BoxFacesEdgesCornersAndBarycentric) {
   Mesh m;
