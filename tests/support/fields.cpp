@@ -5,6 +5,12 @@
 
 namespace eulermap::testing {
 
+ScalarField Sampled(const Grid &g, const std::function<double(const Point3 &)> &f) {
+  ScalarField out(g, 0.0);
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) { out.values[n] = f(g.Node(i, j, k)); });
+  return out;
+}
+
 VectorField LinearField(const double A[3][3], const Point3 &c) {
   Grid g;
   g.origin = Point3(-1, -1, -1);

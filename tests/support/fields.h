@@ -1,11 +1,16 @@
-// Test support: analytic fields on small grids (the tests of saddle.h, cut_axis.h and
-// surgery.h) and exact distances (closest.h, sdf.h, distance_transform.h).
+// Test support: analytic fields on grids (the tests of saddle.h, cut_axis.h, surgery.h,
+// grow_shrink.h and the topology of inside sets) and exact distances (closest.h, sdf.h).
 #pragma once
 
 #include "core/field.h"
 #include "core/zero_set_topology.h"
 
+#include <functional>
+
 namespace eulermap::testing {
+
+// f at every node of g.
+ScalarField Sampled(const Grid &g, const std::function<double(const Point3 &)> &f);
 
 // A 16^3-node grid over [-1, 1]^3 and V(x) = A (x - c) on its nodes (trilinear = exact).
 VectorField LinearField(const double A[3][3], const Point3 &c);

@@ -5,6 +5,8 @@
 #include "core/grow_shrink.h"
 #include "core/zero_set_topology.h"
 
+#include "tests/support/fields.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <limits>
 
 using namespace eulermap;
+using eulermap::testing::Sampled;
 
 namespace {
 
@@ -26,12 +29,6 @@ Grid Cube(int nodes, double h = 1) {
 // Nodes inside a sphere (negative), as a distance-like field.
 std::function<double(const Point3 &)> Ball(const Point3 &c, double r) {
   return [=](const Point3 &p) { return vcg::Distance(p, c) - r; };
-}
-
-ScalarField Sampled(const Grid &g, const std::function<double(const Point3 &)> &f) {
-  ScalarField out(g, 0.0);
-  g.ForEachNode([&](int i, int j, int k, std::size_t n) { out.values[n] = f(g.Node(i, j, k)); });
-  return out;
 }
 
 std::vector<char> Inside(const ScalarField &f) {

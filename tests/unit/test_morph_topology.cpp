@@ -5,6 +5,8 @@
 #include "core/morph.h"
 #include "core/morph_topology.h"
 
+#include "tests/support/fields.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,14 +15,9 @@
 #include <vector>
 
 using namespace eulermap;
+using eulermap::testing::Sampled;
 
 namespace {
-
-ScalarField Sampled(const Grid &g, const std::function<double(const Point3 &)> &f) {
-  ScalarField out(g, 0.0);
-  g.ForEachNode([&](int i, int j, int k, std::size_t n) { out.values[n] = f(g.Node(i, j, k)); });
-  return out;
-}
 
 // A sphere becoming a torus on 32^3 nodes over [-1.6, 1.6]^3.
 struct SphereToTorus {
