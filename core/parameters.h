@@ -2,7 +2,8 @@
 // default, limits and help text. The table drives the MeshLab filter's declarations (the
 // adapter maps each entry onto a RichParameter), Options::Validate (the only place limits
 // are checked), the .mlx scripts of the samples and tests (MlxFilter) and the README's list
-// (eulermap_bench parameters). Adding a parameter is one entry here plus its use in the core.
+// (eulermap_bench parameters; the build rewrites the README's list and samples/*.mlx from it:
+// tests/bench/generated.py). Adding a parameter is one entry here plus its use in the core.
 #pragma once
 
 #include "options.h"

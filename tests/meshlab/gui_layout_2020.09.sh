@@ -9,6 +9,9 @@ ENTRY_APPROACH="420 238"
 ENTRY="420 238"
 GRID_FIELD="350 435"
 STEPS_FIELD="350 466"
+# The clicks below the dialog's rows (APPLY, CLOSE) were measured with this many filter
+# parameters (rows); meshlab_host.check_dialog_rows fails the session when the table has another.
+DIALOG_ROWS=13
 APPLY="423 788"
 CLOSE="145 788"
 HIDE_EYES=("471 114" "471 145" "471 207")

@@ -10,6 +10,9 @@ ENTRY_APPROACH="420 148"
 ENTRY="483 172"
 GRID_FIELD="509 363"
 STEPS_FIELD="509 392"
+# The clicks below the dialog's rows (APPLY, CLOSE) were measured with this many filter
+# parameters (rows); meshlab_host.check_dialog_rows fails the session when the table has another.
+DIALOG_ROWS=13
 APPLY="551 724"
 CLOSE="300 724"
 HIDE_EYES=("490 111" "490 142" "490 205")

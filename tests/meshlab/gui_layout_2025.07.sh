@@ -10,6 +10,9 @@ ENTRY_APPROACH="520 148"
 ENTRY="573 235"
 GRID_FIELD="509 333"
 STEPS_FIELD="509 362"
+# The clicks below the dialog's rows (APPLY, CLOSE) were measured with this many filter
+# parameters (rows); meshlab_host.check_dialog_rows fails the session when the table has another.
+DIALOG_ROWS=13
 APPLY="551 783"
 CLOSE="300 783"
 HIDE_EYES=("449 111" "449 142" "449 205")

@@ -187,6 +187,8 @@ def gui_session(samples, shots, outdir, layout="2020.09", meshlab=None, grid=24,
     version places its menus and dialogs, and with `export` (a path as MeshLab sees it) the
     cut layer is saved from File > Export Mesh As. Screenshots go to `shots`, MeshLab's
     output to outdir/meshlab.out. Returns (the session's CompletedProcess, MeshLab's output)."""
+    if drive:
+        check_dialog_rows(layout)
     os.makedirs(shots, exist_ok=True)
     for old in glob.glob(os.path.join(shots, "meshlab_*.png")):
         os.remove(old)
@@ -200,6 +202,19 @@ def gui_session(samples, shots, outdir, layout="2020.09", meshlab=None, grid=24,
                         "1" if drive else "0", layout], capture_output=True, text=True, timeout=600, env=env)
     out = os.path.join(outdir, "meshlab.out")
     return p, (open(out, errors="replace").read() if os.path.exists(out) else "")
+
+
+def check_dialog_rows(layout):
+    """The clicks of gui_layout_<layout>.sh below the dialog's rows (APPLY, CLOSE) hold for the
+    number of filter parameters they were measured with (DIALOG_ROWS): a parameter added to or
+    removed from the filter's dialog (core/parameters.h) moves them by a height that depends on
+    the MeshLab version (2020.09 caps the dialog's height and hides its last rows behind the
+    buttons), so it is a failure that says what to measure again, not a click in the wrong place."""
+    measured, rows = int(layout_value(layout, "DIALOG_ROWS")), len(plugin_parameter_names())
+    check(rows == measured,
+          f"the filter's dialog has {rows} parameter rows (core/parameters.h) and gui_layout_{layout}.sh's clicks "
+          f"were measured with {measured}: measure APPLY and CLOSE again on meshlab_3_parameters.png "
+          f"(the dialog's screenshot) and set DIALOG_ROWS={rows}")
 
 
 def layout_value(layout, name):

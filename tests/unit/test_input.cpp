@@ -1,20 +1,16 @@
-// What comes in: input.h's checks and repairs, Options::Validate and the memory
-// budget, each asserted on what the pipeline then does: a clean Error naming the problem, or
-// a map measured as sound.
+// What comes in: input.h's checks and repairs and Options::Validate, each asserted on
+// what the pipeline then does: a clean Error naming the problem, or a map measured as
+// sound (the memory budget: test_memory).
 #include "core/input.h"
-#include "core/memory.h"
 #include "core/pipeline.h"
 #include "tests/support/meshes.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/append.h>
 
-#include <sys/resource.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <string>
 
@@ -252,36 +248,6 @@ TEST(Input, MirroredAnchorsEndWithAWarning) {
   ASSERT_EQ(MapError(source, target, Small(), anchors, &result), "");
   EXPECT_TRUE(result.report.warnings.empty()) << result.report.ToText();
 }
-
-TEST(Input, GridBeyondTheProcessMemoryIsRefusedBeforeAllocating) {
-  Mesh source, target;
-  MakeSphere(source, Point3(0, 0, 0), 1, 2);
-  MakeSphere(target, Point3(0, 0, 0), 1.2, 2);
-  rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_AS, &saved), 0);
-  // 2 GiB more address space than is in use: a fixed limit would leave AddressSanitizer,
-  // whose shadow memory alone takes terabytes of it, none to map.
-  const std::size_t inUse = [] {
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-      if (line.rfind("VmSize:", 0) == 0) return std::size_t(std::stoull(line.substr(7))) * 1024;
-    return std::size_t(0);
-  }();
-  ASSERT_GT(inUse, 0u);
-  rlimit tight = saved;
-  tight.rlim_cur = inUse + (std::size_t(2) << 30);
-  ASSERT_EQ(setrlimit(RLIMIT_AS, &tight), 0);
-  const std::size_t room = AvailableBytes();
-  Options o;
-  o.gridResolution = 400;  // 400^3 nodes: about 30 GiB
-  const std::string message = MapError(source, target, o);
-  setrlimit(RLIMIT_AS, &saved);
-  EXPECT_LT(room, std::size_t(3) << 30);
-  EXPECT_NE(message.find("grid_resolution 400: the grid would have"), std::string::npos) << message;
-  EXPECT_NE(message.find("lower grid_resolution"), std::string::npos);
-}
-
 
 TEST(Input, FacesThatDisagreeWithTheirNeighboursAreTurned) {
   Mesh sphere, mixed;

@@ -1,9 +1,9 @@
-// Unit tests of placement.h and morph.h: measured properties of the placement
-// similarity, the ARAP anchor interpolation (Alexa et al. 2000), the thin-plate warps
-// and the morph frames of Eq. 1.
+// Unit tests of morph.h: measured properties of the ARAP anchor interpolation (Alexa et
+// al. 2000), the thin-plate warps and the morph frames of Eq. 1 (placement: test_placement).
+#include "core/eigen_point.h"
 #include "core/morph.h"
-#include "core/placement.h"
 #include "tests/support/meshes.h"
+#include "tests/support/points.h"
 
 #include <gtest/gtest.h>
 
@@ -19,30 +19,11 @@
 namespace eulermap {
 namespace {
 
-Eigen::Vector3d E(const Point3 &p) { return Eigen::Vector3d(p.X(), p.Y(), p.Z()); }
-Point3 P(const Eigen::Vector3d &v) { return Point3(v.x(), v.y(), v.z()); }
-
-#define EXPECT_POINT_NEAR(p, q, tol) EXPECT_LE(vcg::Distance((p), (q)), (tol)) << "(" << (p).X() << "," << (p).Y() << "," << (p).Z() << ") vs (" << (q).X() << "," << (q).Y() << "," << (q).Z() << ")"
-
-Similarity KnownSimilarity() {
-  Similarity s;
-  s.rotation = Eigen::AngleAxisd(1.1, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
-  s.scale = 1.7;
-  s.translation = Eigen::Vector3d(0.3, -4, 2.5);
-  return s;
-}
-
-std::vector<Point3> RandomPoints(int n, unsigned seed, double radius = 1) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> u(-radius, radius);
-  std::vector<Point3> pts(n);
-  for (auto &p : pts) p = Point3(u(gen), u(gen), u(gen));
-  return pts;
-}
+using testing::RandomPoints;
 
 // A non-trivial target: rotated, scaled, translated, then bent.
 Point3 Bend(const Point3 &p) {
-  const Eigen::Vector3d q = 1.3 * (Eigen::AngleAxisd(0.8, Eigen::Vector3d(0, 1, 1).normalized()) * E(p)) +
+  const Eigen::Vector3d q = 1.3 * (Eigen::AngleAxisd(0.8, Eigen::Vector3d(0, 1, 1).normalized()) * ToEigen(p)) +
                             Eigen::Vector3d(0.2, 0.1, -0.3);
   return Point3(q.x(), q.y() + 0.3 * q.x() * q.x(), q.z() + 0.2 * std::sin(2 * q.y()));
 }
@@ -69,104 +50,6 @@ struct Fields {
     });
   }
 };
-
-// ---------------------------------------------------------------- placement
-
-TEST(Placement, ApplyAndInverse) {
-  const Similarity s = KnownSimilarity();
-  const Point3 p(0.7, -1.2, 3.3);
-  const Eigen::Vector3d expected = 1.7 * (s.rotation * E(p)) + s.translation;
-  EXPECT_POINT_NEAR(s.Apply(p), P(expected), 1e-12);
-  EXPECT_POINT_NEAR(s.Inverse().Apply(s.Apply(p)), p, 1e-12);
-  EXPECT_POINT_NEAR(s.Apply(s.Inverse().Apply(p)), p, 1e-12);
-}
-
-TEST(Placement, UmeyamaRecoversKnownSimilarity) {
-  const Similarity truth = KnownSimilarity();
-  const Mesh empty;
-  for (int n : {3, 4, 9}) {
-    const std::vector<Point3> from = RandomPoints(n, 10 + n, 2);
-    std::vector<Point3> to;
-    for (const auto &p : from) to.push_back(truth.Apply(p));
-    const Similarity s = FitPlacement(empty, empty, from, to, Align::None);
-    EXPECT_NEAR(s.scale, truth.scale, 1e-9) << n << " anchors";
-    EXPECT_LE((s.rotation - truth.rotation).norm(), 1e-9) << n << " anchors";
-    EXPECT_LE((s.translation - truth.translation).norm(), 1e-9) << n << " anchors";
-    EXPECT_NEAR(s.rotation.determinant(), 1, 1e-12);
-  }
-}
-
-TEST(Placement, OneAndTwoAnchors) {
-  const Mesh empty;
-  const Point3 b0(1, 2, 3), a0(-1, 0.5, 2);
-  Similarity s = FitPlacement(empty, empty, {b0}, {a0}, Align::CentreAndScale);
-  EXPECT_NEAR(s.scale, 1, 0);
-  EXPECT_LE((s.rotation - Eigen::Matrix3d::Identity()).norm(), 0);
-  EXPECT_POINT_NEAR(s.Apply(b0), a0, 1e-12);
-
-  const Point3 b1(2, 2, 3), a1(-1, 2.5, 2);  // x-direction onto y-direction, length 1 -> 2
-  s = FitPlacement(empty, empty, {b0, b1}, {a0, a1}, Align::None);
-  EXPECT_NEAR(s.scale, 2, 1e-12);
-  EXPECT_POINT_NEAR(s.Apply(b0), a0, 1e-12);
-  EXPECT_POINT_NEAR(s.Apply(b1), a1, 1e-12);
-  // Minimal rotation: about the axis perpendicular to both directions (z), 90 degrees.
-  EXPECT_LE((s.rotation * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ()).norm(), 1e-12);
-  EXPECT_NEAR(Eigen::AngleAxisd(s.rotation).angle(), M_PI / 2, 1e-12);
-}
-
-TEST(Placement, CollinearAnchorsUseTheLineRule) {
-  const Similarity truth = KnownSimilarity();
-  const Mesh empty;
-  std::vector<Point3> from, to;
-  for (double u : {-1.0, 0.2, 0.5, 2.0}) {
-    from.push_back(Point3(1, 1, 1) + Point3(1, 2, -1) * u);
-    to.push_back(truth.Apply(from.back()));
-  }
-  const Similarity s = FitPlacement(empty, empty, from, to, Align::None);
-  EXPECT_NEAR(s.scale, truth.scale, 1e-9);
-  for (std::size_t i = 0; i < from.size(); ++i) EXPECT_POINT_NEAR(s.Apply(from[i]), to[i], 1e-9);
-  EXPECT_NEAR(s.rotation.determinant(), 1, 1e-12);
-}
-
-TEST(Placement, SurfaceCentroid) {
-  Mesh box, sphere;
-  testing::MakeBox(box, Box3(Point3(1, 2, 3), Point3(2, 5, 4)), 4);
-  EXPECT_POINT_NEAR(SurfaceCentroid(box), Point3(1.5, 3.5, 3.5), 1e-12);
-  testing::MakeSphere(sphere, Point3(-2, 0.5, 7), 3, 3);
-  EXPECT_POINT_NEAR(SurfaceCentroid(sphere), Point3(-2, 0.5, 7), 1e-9);
-}
-
-TEST(Placement, CentreAndScaleAlignsCentroidsAndDiagonals) {
-  Mesh source, target;
-  testing::MakeSphere(source, Point3(1, 2, 3), 2, 3);
-  testing::MakeEllipsoid(target, Point3(-5, 0, 1), Point3(1, 2, 0.5), 3);
-
-  const Similarity none = FitPlacement(source, target, {}, {}, Align::None);
-  EXPECT_EQ(none.scale, 1);
-  EXPECT_EQ(none.translation, Eigen::Vector3d::Zero());
-
-  const Similarity s = FitPlacement(source, target, {}, {}, Align::CentreAndScale);
-  Mesh placed;
-  vcg::tri::Append<Mesh, Mesh>::MeshCopy(placed, target);
-  Transform(placed, s);
-  EXPECT_POINT_NEAR(SurfaceCentroid(placed), SurfaceCentroid(source), 1e-9);
-  EXPECT_NEAR(placed.bbox.Diag(), source.bbox.Diag(), 1e-9);
-  EXPECT_LE((s.rotation - Eigen::Matrix3d::Identity()).norm(), 0);
-}
-
-TEST(Placement, TransformMovesPositionsAndRotatesNormals) {
-  Mesh m;
-  testing::MakeSphere(m, Point3(0, 0, 0), 1, 2);
-  const Similarity s = KnownSimilarity();
-  Mesh moved;
-  vcg::tri::Append<Mesh, Mesh>::MeshCopy(moved, m);
-  Transform(moved, s);
-  for (std::size_t i = 0; i < m.vert.size(); ++i) {
-    EXPECT_POINT_NEAR(moved.vert[i].P(), s.Apply(m.vert[i].P()), 1e-12);
-    EXPECT_POINT_NEAR(moved.vert[i].N(), P(s.rotation * E(m.vert[i].N())), 1e-12);
-  }
-  EXPECT_POINT_NEAR(moved.bbox.Center(), P(s.translation), 1e-9 * 1.7 * 2);
-}
 
 // ---------------------------------------------------------------- morph: linear blend
 
@@ -280,17 +163,17 @@ TEST(Morph, ArapInterpolatesAPureRotationRigidly) {
   for (auto &p : a) p -= c;  // rotate about the anchors' centroid
   const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
   std::vector<Point3> b;
-  for (const auto &p : a) b.push_back(P(Eigen::AngleAxisd(M_PI / 2, axis) * E(p)));
+  for (const auto &p : a) b.push_back(ToPoint(Eigen::AngleAxisd(M_PI / 2, axis) * ToEigen(p)));
   const Morph m(f.f0, f.f1, a, b);
   ASSERT_EQ(m.mode(), Morph::Mode::ArapTps);
   for (double t : {0.25, 0.5, 0.75}) {
     const Eigen::AngleAxisd rt(t * M_PI / 2, axis);
     const std::vector<Point3> q = m.Anchors(t);
-    for (std::size_t i = 0; i < a.size(); ++i) EXPECT_POINT_NEAR(q[i], P(rt * E(a[i])), 1e-6) << "t=" << t;
+    for (std::size_t i = 0; i < a.size(); ++i) EXPECT_POINT_NEAR(q[i], ToPoint(rt * ToEigen(a[i])), 1e-6) << "t=" << t;
     // A rigid motion is affine, so the thin-plate warps reproduce it everywhere.
     const Point3 p(1.7, -0.6, 2.4);
-    EXPECT_POINT_NEAR(m.WarpToSource(t, p), P(rt.inverse() * E(p)), 1e-6);
-    EXPECT_POINT_NEAR(m.WarpToTarget(t, p), P(Eigen::AngleAxisd((1 - t) * M_PI / 2, axis) * E(p)), 1e-6);
+    EXPECT_POINT_NEAR(m.WarpToSource(t, p), ToPoint(rt.inverse() * ToEigen(p)), 1e-6);
+    EXPECT_POINT_NEAR(m.WarpToTarget(t, p), ToPoint(Eigen::AngleAxisd((1 - t) * M_PI / 2, axis) * ToEigen(p)), 1e-6);
   }
   const std::vector<Point3> q = m.Anchors(0.5);
   for (std::size_t i = 0; i < a.size(); ++i)

@@ -1,7 +1,8 @@
-// Unit tests of core/closest.h and core/sdf.h: closest points, winding numbers and the
-// signed distance fields f0, f1, checked against analytic shapes and the shared meshes.
+// Unit tests of core/sdf.h: winding numbers and the signed distance fields f0, f1, checked
+// against analytic shapes and the shared meshes (closest points: test_closest).
 #include "core/closest.h"
 #include "core/sdf.h"
+#include "tests/support/fields.h"
 #include "tests/support/meshes.h"
 
 #include <gtest/gtest.h>
@@ -24,6 +25,7 @@
 namespace eulermap {
 namespace {
 
+using testing::BoxSignedDistance;
 using testing::DataMesh;
 using testing::LoadMesh;
 using testing::MakeBox;
@@ -47,18 +49,6 @@ double BruteWinding(const Mesh &m, const Point3 &p) {
   return sum / (4 * M_PI);
 }
 
-// Exact signed distance to an axis-aligned box (negative inside).
-double BoxSdf(const Box3 &box, const Point3 &p) {
-  const Point3 c = box.Center(), half = box.Dim() / 2;
-  double outside = 0, inside = -1e300;
-  for (int a = 0; a < 3; ++a) {
-    const double q = std::abs(p[a] - c[a]) - half[a];
-    outside += std::max(q, 0.0) * std::max(q, 0.0);
-    inside = std::max(inside, q);
-  }
-  return inside > 0 ? std::sqrt(outside) : inside;
-}
-
 // Winding numbers at every node of the grid (parallel).
 std::vector<double> WindingAtNodes(const WindingNumber &w, const Grid &g) {
   std::vector<double> out(g.NodeCount());
@@ -69,80 +59,6 @@ std::vector<double> WindingAtNodes(const WindingNumber &w, const Grid &g) {
     out[idx] = w(g.Node(i, j, k));
   }
   return out;
-}
-
-// ---------------------------------------------------------------- ClosestPoint
-
-TEST(ClosestPoint, BoxFacesEdgesCornersAndBarycentric) {
-  Mesh m;
-  const Box3 box(Point3(-1, -1, -1), Point3(1, 1, 1));
-  MakeBox(m, box, 2);
-  ClosestPoint cp(m);
-  const Point3 queries[] = {Point3(0.3, 0.2, 3), Point3(2, 2, 0.1), Point3(3, -3, 3), Point3(0.1, 0.2, 0.3), Point3(0, 0, 0.9)};
-  for (const Point3 &p : queries) {
-    const ClosestHit hit = cp.Query(p);
-    ASSERT_NE(hit.face, nullptr);
-    EXPECT_NEAR(hit.distance, std::abs(BoxSdf(box, p)), 1e-12);
-    EXPECT_NEAR((hit.point - p).Norm(), hit.distance, 1e-12);
-    const Point3 b = hit.barycentric;
-    EXPECT_NEAR(b[0] + b[1] + b[2], 1, 1e-12);
-    for (int v = 0; v < 3; ++v) EXPECT_GE(b[v], -1e-9);
-    const Point3 back = hit.face->cP(0) * b[0] + hit.face->cP(1) * b[1] + hit.face->cP(2) * b[2];
-    EXPECT_NEAR((back - hit.point).Norm(), 0, 1e-12);
-  }
-  // A search radius smaller than the distance finds nothing; a larger one finds the face.
-  EXPECT_EQ(cp.Query(Point3(0, 0, 3), 1.5).face, nullptr);
-  EXPECT_NEAR(cp.Query(Point3(0, 0, 3), 2.5).distance, 2, 1e-12);
-  // Far away, without a limit.
-  EXPECT_NEAR(cp.Query(Point3(0, 0, 100)).distance, 99, 1e-9);
-
-  // Deleted faces are not found; an empty mesh finds nothing.
-  const ClosestHit top = cp.Query(Point3(0.5, 0.5, 1.5));
-  vcg::tri::Allocator<Mesh>::DeleteFace(m, *const_cast<Face *>(top.face));
-  const ClosestPoint withoutFace(m);
-  const ClosestHit other = withoutFace.Query(Point3(0.5, 0.5, 1.5));
-  ASSERT_NE(other.face, nullptr);
-  EXPECT_NE(other.face, top.face);
-  Mesh empty;
-  EXPECT_EQ(ClosestPoint(empty).Query(Point3(0, 0, 0)).face, nullptr);
-}
-
-TEST(ClosestPoint, ConcurrentQueriesMatchSequentialOnes) {
-  Mesh m;
-  LoadMesh(DataMesh("bunny.off"), m);
-  ClosestPoint cp(m);
-  std::mt19937 rng(7);
-  const Box3 b = m.bbox;
-  std::uniform_real_distribution<double> ux(b.min.X() - 0.2 * b.DimX(), b.max.X() + 0.2 * b.DimX());
-  std::uniform_real_distribution<double> uy(b.min.Y() - 0.2 * b.DimY(), b.max.Y() + 0.2 * b.DimY());
-  std::uniform_real_distribution<double> uz(b.min.Z() - 0.2 * b.DimZ(), b.max.Z() + 0.2 * b.DimZ());
-  std::vector<Point3> pts(20000);
-  for (auto &p : pts) p = Point3(ux(rng), uy(rng), uz(rng));
-  std::uniform_int_distribution<int> uv(0, m.vn - 1);
-  std::uniform_real_distribution<double> off(-0.01, 0.01);
-  for (std::size_t i = 0; i < pts.size(); i += 2) {  // half of them close to the surface
-    const Vertex &v = m.vert[uv(rng)];
-    pts[i] = v.cP() + v.cN() * (off(rng) * b.Diag());
-  }
-  std::vector<ClosestHit> seq(pts.size()), par(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) seq[i] = cp.Query(pts[i]);
-#pragma omp parallel for schedule(dynamic, 64)
-  for (long i = 0; i < long(pts.size()); ++i) par[i] = cp.Query(pts[i]);
-  int mismatches = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    if (seq[i].face != par[i].face || seq[i].distance != par[i].distance) ++mismatches;
-  EXPECT_EQ(mismatches, 0);
-  // Check against an exhaustive search over the faces.
-  for (std::size_t i = 0; i < 2000; ++i) {
-    double best = 1e300;
-    for (const Face &f : m.face) {
-      double d = 1e300;
-      Point3 q;
-      vcg::face::PointDistanceBase(f, pts[i], d, q);
-      best = std::min(best, d);
-    }
-    EXPECT_NEAR(seq[i].distance, best, 1e-12);
-  }
 }
 
 // ---------------------------------------------------------------- WindingNumber
@@ -237,7 +153,7 @@ TEST(SignedDistance, BoxMatchesAnalyticExactly) {
   double maxErr = 0;
   int wrongSign = 0;
   g.ForEachNode([&](int i, int j, int k, std::size_t idx) {
-    const double truth = BoxSdf(box, g.Node(i, j, k));
+    const double truth = BoxSignedDistance(box, g.Node(i, j, k));
     maxErr = std::max(maxErr, std::abs(f.values[idx] - truth));
     if (std::abs(truth) > 1e-3 * g.h && (f.values[idx] < 0) != (truth < 0)) ++wrongSign;
   });

@@ -1,10 +1,10 @@
-// Topology change: saddle detection (saddle.h) on analytic fields, and the whole
-// pipeline between surfaces of different genus or number of components, checked by the
-// exact topology of the cut source (DESIGN.md: expected topology after surgery) and by
-// the map's measured quality (report.h, MapQuality).
+// Topology change: the whole pipeline between surfaces of different genus or number of
+// components, checked by the exact topology of the cut source (DESIGN.md: expected topology
+// after surgery) and by the map's measured quality (report.h, MapQuality). Saddles, cut
+// axes and surgery on their own: test_saddle, test_cut_axis, test_surgery.
 #include "core/closest.h"
-#include "core/saddle.h"
-#include "core/surgery.h"
+#include "core/cut_axis.h"
+#include "core/pipeline.h"
 #include "core/topology.h"
 #include "tests/support/meshes.h"
 
@@ -23,20 +23,6 @@ using namespace eulermap;
 using namespace eulermap::testing;
 
 namespace {
-
-// A 16^3-node grid over [-1, 1]^3 and V(x) = A (x - c) on its nodes (trilinear = exact).
-VectorField LinearField(const double A[3][3], const Point3 &c) {
-  Grid g;
-  g.origin = Point3(-1, -1, -1);
-  g.h = 2.0 / 15;
-  g.dims = vcg::Point3i(16, 16, 16);
-  VectorField V(g, Point3(0, 0, 0));
-  g.ForEachNode([&](int i, int j, int k, std::size_t n) {
-    const Point3 d = g.Node(i, j, k) - c;
-    for (int r = 0; r < 3; ++r) V.values[n][r] = A[r][0] * d[0] + A[r][1] * d[1] + A[r][2] * d[2];
-  });
-  return V;
-}
 
 // Two meshes as one (components side by side).
 void Join(Mesh &m, Mesh &other) {
@@ -161,157 +147,6 @@ std::vector<Point3> RimImages(Mesh &cut) {
 }
 
 } // namespace
-
-TEST(SaddleFinder, FindsTheSaddlesOfLinearFields) {
-  const Point3 c(0.13, -0.21, 0.07);  // inside a cell, not on a node
-  const double one[3][3] = {{1, 0.3, 0}, {0, -1, 0.2}, {0, 0, -0.5}};  // one expanding direction
-  const double two[3][3] = {{1, 0, 0}, {0, 0.5, 0}, {0.3, 0, -2}};     // two
-  for (auto *A : {one, two}) {
-    const std::vector<Saddle> s = FindSaddles(LinearField(A, c));
-    ASSERT_EQ(s.size(), 1u);
-    EXPECT_LT(vcg::Distance(s[0].position, c), 1e-9);
-    EXPECT_EQ(s[0].expandingDirections, A == one ? 1 : 2);
-  }
-  // A sink, a source and a rotation about a sink are no saddles.
-  const double sink[3][3] = {{-1, 0, 0}, {0, -2, 0}, {0, 0, -1}};
-  const double source[3][3] = {{1, 0, 0}, {0, 2, 0}, {0, 0, 1}};
-  const double spiral[3][3] = {{-0.1, -1, 0}, {1, -0.1, 0}, {0, 0, -1}};
-  for (auto *A : {sink, source, spiral}) EXPECT_TRUE(FindSaddles(LinearField(A, c)).empty());
-  // Nearly degenerate (a rate 1% of the largest, as along a ring of zeros): no saddle.
-  const double ring[3][3] = {{1, 0, 0}, {0, 0.01, 0}, {0, 0, -1}};
-  EXPECT_TRUE(FindSaddles(LinearField(ring, c)).empty());
-  // A saddle on a grid node (found from its 8 cells) is one saddle.
-  const std::vector<Saddle> onNode = FindSaddles(LinearField(one, Point3(-1 + 7 * 2.0 / 15, -1 + 2.0 / 15, -1 + 9 * 2.0 / 15)));
-  EXPECT_EQ(onNode.size(), 1u);
-}
-
-// f(p) = sum_a curvature[a] (p - c)_a^2 on V's grid: critical at c, f(c) = 0.
-ScalarField Quadric(const Grid &g, const Point3 &c, const Point3 &curvature) {
-  ScalarField f(g, 0.0);
-  g.ForEachNode([&](int i, int j, int k, std::size_t n) {
-    const Point3 d = g.Node(i, j, k) - c;
-    f.values[n] = curvature[0] * d[0] * d[0] + curvature[1] * d[1] * d[1] + curvature[2] * d[2] * d[2];
-  });
-  return f;
-}
-
-TopologyEvent EventAt(const Grid &g, const vcg::Point3i &node, TopologyEventKind kind) {
-  TopologyEvent e;
-  e.node = node;
-  e.position = g.Node(node[0], node[1], node[2]);
-  e.kind = kind;
-  return e;
-}
-
-// The axis of a cut: the odd-signed principal direction of f's Hessian (one negative
-// curvature: two parts meeting or a neck; two: a membrane tearing or a hole closing), or
-// the stable manifold of a saddle of V of the matching kind within two cells.
-TEST(CutAxis, OddSignedCurvatureOrNearbySaddle) {
-  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
-  const vcg::Point3i node(7, 7, 7);
-  const TopologyEvent merge = EventAt(g, node, TopologyEventKind::PartsMerged);
-  const Point3 x = merge.position;
-  EXPECT_NEAR(std::abs(CutAxis(merge, Quadric(g, x, Point3(1, -2, 1)), {}).axis.Y()), 1, 1e-9);
-  const TopologyEvent closing = EventAt(g, node, TopologyEventKind::HandleLost);
-  const CutDirection d = CutAxis(closing, Quadric(g, x, Point3(-1, -1, 3)), {});
-  EXPECT_NEAR(std::abs(d.axis.Z()), 1, 1e-9);
-  EXPECT_FALSE(d.fromSaddle);
-  Saddle near{x + Point3(g.h, 0, 0), 1, Point3(1, 0, 0)}, wrongKind{x, 2, Point3(0, 1, 0)}, far{x + Point3(3 * g.h, 0, 0), 1, Point3(0, 1, 0)};
-  const CutDirection s = CutAxis(closing, Quadric(g, x, Point3(-1, -1, 3)), {wrongKind, far, near});
-  EXPECT_TRUE(s.fromSaddle);
-  EXPECT_NEAR(s.axis.X(), 1, 1e-9);
-  EXPECT_EQ(ShapeOf(TopologyEventKind::HandleGained), CutShape::Discs);
-  EXPECT_EQ(ShapeOf(TopologyEventKind::PartSplit), CutShape::Band);
-  EXPECT_EQ(ShapeOf(TopologyEventKind::ComponentBorn), CutShape::None);
-}
-
-// Events cut by their kind where the tracked surface takes part: two sheets meeting lose a
-// disc each, whatever V's saddles say; an event far from every tracked triangle and a birth
-// are reported, not cut.
-TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
-  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;  // 16^3 nodes over [-1, 1]^3
-  const double cell = g.h;
-  Mesh sphere;
-  MakeSphere(sphere, g.Node(7, 7, 7), 0.3, 3);  // 2.25 cells from its centre
-  std::vector<Point3> points;
-  for (const Vertex &v : sphere.vert) points.push_back(v.cP());
-  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
-  const ScalarField f = Quadric(g, g.Node(7, 7, 7), Point3(-1, -1, 1));  // a membrane through the centre, normal z
-  const std::vector<TopologyEvent> events = {EventAt(g, {14, 14, 14}, TopologyEventKind::HandleGained),  // 7 cells away
-                                             EventAt(g, {7, 7, 7}, TopologyEventKind::ComponentBorn),
-                                             EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)};
-  Surgery surgery(sphere, cell, cell, events, std::vector<EventCut>(events.size(), EventCut::Planned), false);
-  EXPECT_TRUE(surgery.Acts(0));
-  surgery.Step(0, {}, f, tracker);
-  ASSERT_EQ(surgery.Outcomes().size(), 3u);
-  EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
-  EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::NotACutKind);
-  EXPECT_EQ(surgery.Outcomes()[2].outcome, EventCut::Cut);
-  EXPECT_FALSE(surgery.Outcomes()[2].axisFromSaddle);
-  Mesh cut;
-  std::vector<EventSurgery> outcomes;
-  surgery.Build(sphere, tracker.Points(), cut, outcomes);
-  EXPECT_GT(outcomes[2].facesRemoved, 0);
-  EXPECT_GT(outcomes[2].rimLength, 0);
-  const Topology t = MeasureTopology(cut);  // both poles along z go: an annulus (sphere -> torus)
-  EXPECT_EQ(t.components, 1);
-  EXPECT_EQ(t.boundaryLoops, 2);
-  EXPECT_EQ(t.eulerCharacteristic, 0);
-  for (const Vertex &v : cut.vert)  // the poles went, the equator stayed
-    if (!v.IsD()) EXPECT_LT(std::abs(v.cP().Z() - g.Node(7, 7, 7).Z()), 0.29);
-}
-
-// A neck pinching: the band of faces crossing the plane normal to the neck goes.
-TEST(Surgery, PinchingNeckLosesABand) {
-  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
-  Mesh torus;
-  MakeTorus(torus, g.Node(7, 7, 7), 0.55, 0.2);
-  std::vector<Point3> points;
-  for (const Vertex &v : torus.vert) points.push_back(v.cP());
-  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
-  const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
-  const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
-  Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned}, false);
-  surgery.Step(0, {}, f, tracker);
-  ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
-  Mesh cut;
-  std::vector<EventSurgery> outcomes;
-  surgery.Build(torus, tracker.Points(), cut, outcomes);
-  const Topology t = MeasureTopology(cut);  // a cylinder
-  EXPECT_EQ(t.components, 1);
-  EXPECT_EQ(t.boundaryLoops, 2);
-  EXPECT_EQ(t.eulerCharacteristic, 0);
-}
-
-// Stretched edges are split only where both ends still follow f = 0: a tracked point left
-// off its level set (the part of the surface it followed vanished without a cut) is no place
-// to refine, since every point put beside it is pulled back onto the far end.
-TEST(Surgery, StretchedEdgesAreSplitOnlyWhereTheirEndsKeepTheirLevel) {
-  const Grid g = Grid::Enclosing(Box3(Point3(-1, -1, -1), Point3(1, 1, 1)), 40);
-  Mesh source;
-  MakeSphere(source, Point3(0, 0, 0), 0.1, 2);
-  std::vector<Point3> points;
-  for (const Vertex &v : source.vert) points.push_back(v.cP() * 6.0);  // stretched 6 times, edges over 2 cells
-  for (const double radius : {0.6, 0.75}) {  // f = 0 through the points; 3 cells beyond them
-    ScalarField f(g, 0.0);
-    for (int k = 0; k < g.dims.Z(); ++k)
-      for (int j = 0; j < g.dims.Y(); ++j)
-        for (int i = 0; i < g.dims.X(); ++i) f(i, j, k) = g.Node(i, j, k).Norm() - radius;
-    Tracker tracker(points, std::vector<double>(points.size(), 0.0));
-    Surgery surgery(source, g.h, g.h, {}, {}, true);  // splits stretched edges from the start
-    surgery.Step(0, {}, f, tracker);
-    Mesh cut;
-    std::vector<EventSurgery> outcomes;
-    surgery.Build(source, tracker.Points(), cut, outcomes);
-    if (radius == 0.6)
-      EXPECT_GT(surgery.PointsAdded(), int(source.vert.size()));
-    else
-      EXPECT_EQ(surgery.PointsAdded(), 0);
-  }
-}
 
 // Fig. 5: a sphere becomes a torus; two discs go, one from each side of the axis.
 TEST(TopologyChange, SphereToTorus) {

@@ -4,6 +4,7 @@
 // between shapes of different topology, which must add up to the difference of the
 // measures at every step.
 #include "core/zero_set_topology.h"
+#include "tests/support/fields.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include <random>
 
 using namespace eulermap;
+using eulermap::testing::Sampled;
 
 namespace {
 
@@ -27,12 +29,6 @@ Grid Cube(double half, int nodes) {
   g.h = 2 * half / (nodes - 1);
   g.dims = vcg::Point3i(nodes, nodes, nodes);
   return g;
-}
-
-ScalarField Sampled(const Grid &g, const Shape &shape) {
-  ScalarField f(g, 0.0);
-  g.ForEachNode([&](int i, int j, int k, std::size_t n) { f.values[n] = shape(g.Node(i, j, k)); });
-  return f;
 }
 
 // Distance-like functions, negative inside.

@@ -1,0 +1,55 @@
+#include "fields.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace eulermap::testing {
+
+ScalarField Sampled(const Grid &g, const std::function<double(const Point3 &)> &f) {
+  ScalarField out(g, 0.0);
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) { out.values[n] = f(g.Node(i, j, k)); });
+  return out;
+}
+
+VectorField LinearField(const double A[3][3], const Point3 &c) {
+  Grid g;
+  g.origin = Point3(-1, -1, -1);
+  g.h = 2.0 / 15;
+  g.dims = vcg::Point3i(16, 16, 16);
+  VectorField V(g, Point3(0, 0, 0));
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) {
+    const Point3 d = g.Node(i, j, k) - c;
+    for (int r = 0; r < 3; ++r) V.values[n][r] = A[r][0] * d[0] + A[r][1] * d[1] + A[r][2] * d[2];
+  });
+  return V;
+}
+
+ScalarField Quadric(const Grid &g, const Point3 &c, const Point3 &curvature) {
+  ScalarField f(g, 0.0);
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) {
+    const Point3 d = g.Node(i, j, k) - c;
+    f.values[n] = curvature[0] * d[0] * d[0] + curvature[1] * d[1] * d[1] + curvature[2] * d[2] * d[2];
+  });
+  return f;
+}
+
+double BoxSignedDistance(const Box3 &box, const Point3 &p) {
+  const Point3 c = box.Center(), half = box.Dim() / 2;
+  double outside = 0, inside = -1e300;
+  for (int a = 0; a < 3; ++a) {
+    const double q = std::abs(p[a] - c[a]) - half[a];
+    outside += std::max(q, 0.0) * std::max(q, 0.0);
+    inside = std::max(inside, q);
+  }
+  return inside > 0 ? std::sqrt(outside) : inside;
+}
+
+TopologyEvent EventAt(const Grid &g, const vcg::Point3i &node, TopologyEventKind kind) {
+  TopologyEvent e;
+  e.node = node;
+  e.position = g.Node(node[0], node[1], node[2]);
+  e.kind = kind;
+  return e;
+}
+
+} // namespace eulermap::testing

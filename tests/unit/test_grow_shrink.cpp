@@ -1,0 +1,158 @@
+// Grow then withdraw (grow_shrink.h): distances within G against the 26-neighbour metric,
+// around corners and across cells that G's edges do not join; the frames at t = 0, t* and
+// 1 hold X0, X0 u X1 and X1; the inside set only grows before t* and only shrinks after; a
+// target part that the source does not touch is grown into, not born.
+#include "core/grow_shrink.h"
+#include "core/zero_set_topology.h"
+
+#include "tests/support/fields.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace eulermap;
+using eulermap::testing::Sampled;
+
+namespace {
+
+Grid Cube(int nodes, double h = 1) {
+  Grid g;
+  g.h = h;
+  g.dims = vcg::Point3i(nodes, nodes, nodes);
+  return g;
+}
+
+// Nodes inside a sphere (negative), as a distance-like field.
+std::function<double(const Point3 &)> Ball(const Point3 &c, double r) {
+  return [=](const Point3 &p) { return vcg::Distance(p, c) - r; };
+}
+
+std::vector<char> Inside(const ScalarField &f) {
+  std::vector<char> in(f.values.size());
+  for (std::size_t n = 0; n < in.size(); ++n) in[n] = f.values[n] < 0;
+  return in;
+}
+
+// The 26-neighbour path length from node 0 to (a, b, c) in a grid with every node in G.
+double Chamfer(int a, int b, int c) {
+  int s[3] = {a, b, c};
+  std::sort(s, s + 3);
+  return std::sqrt(3.0) * s[0] + std::sqrt(2.0) * (s[1] - s[0]) + (s[2] - s[1]);
+}
+
+TEST(GrowShrink, DistanceWithinAFullBlockIsThe26NeighbourMetric) {
+  const Grid g = Cube(7, 0.5);
+  std::vector<char> inside(g.NodeCount(), 1), seed(g.NodeCount(), 0);
+  seed[g.Index(0, 0, 0)] = 1;
+  const std::vector<double> d = DistanceWithin(g, inside, seed);
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) { EXPECT_NEAR(d[n], 0.5 * Chamfer(i, j, k), 1e-12); });
+}
+
+// An L-shaped corridor one node wide: the distance goes round the corner; a node outside G
+// and a node of G cut off from the seeds are not reached.
+TEST(GrowShrink, DistanceWithinFollowsGAroundCorners) {
+  const Grid g = Cube(6);
+  std::vector<char> inside(g.NodeCount(), 0), seed(g.NodeCount(), 0);
+  for (int i = 0; i < 6; ++i) inside[g.Index(i, 0, 0)] = 1;  // along x
+  for (int j = 0; j < 6; ++j) inside[g.Index(5, j, 0)] = 1;  // then along y
+  inside[g.Index(0, 5, 5)] = 1;                              // alone
+  seed[g.Index(0, 0, 0)] = 1;
+  const std::vector<double> d = DistanceWithin(g, inside, seed);
+  EXPECT_EQ(d[g.Index(3, 0, 0)], 3);
+  EXPECT_EQ(d[g.Index(5, 0, 0)], 5);
+  // (4, 0) -> (5, 1) is a diagonal step with both ends in G and (5, 0) between them.
+  EXPECT_NEAR(d[g.Index(5, 5, 0)], 8 + std::sqrt(2.0), 1e-12);
+  EXPECT_TRUE(std::isinf(d[g.Index(0, 5, 5)]));
+  EXPECT_TRUE(std::isinf(d[g.Index(2, 2, 0)]));
+}
+
+// Two nodes of G that only a cell's diagonal joins are not joined: no node is reached
+// without a 6-neighbour nearer the seeds.
+TEST(GrowShrink, ADiagonalStepNeedsAPathOfEdgesThroughG) {
+  const Grid g = Cube(3);
+  std::vector<char> inside(g.NodeCount(), 0), seed(g.NodeCount(), 0);
+  inside[g.Index(0, 0, 0)] = inside[g.Index(1, 1, 0)] = inside[g.Index(2, 2, 2)] = 1;
+  seed[g.Index(0, 0, 0)] = 1;
+  const std::vector<double> d = DistanceWithin(g, inside, seed);
+  EXPECT_TRUE(std::isinf(d[g.Index(1, 1, 0)]));
+  inside[g.Index(1, 0, 0)] = 1;  // now an edge path joins them within the cell
+  EXPECT_NEAR(DistanceWithin(g, inside, seed)[g.Index(1, 1, 0)], std::sqrt(2.0), 1e-12);
+}
+
+// X0: a ball on the left; X1: a ball overlapping it and, beyond, another that touches only
+// the first target ball (the linear blend would give it birth).
+struct Balls {
+  Grid g;
+  ScalarField f0, f1;
+  Balls() {
+    g.origin = Point3(-2, -1.2, -1.2);
+    g.h = 0.1;
+    g.dims = vcg::Point3i(41, 25, 25);
+    f0 = Sampled(g, Ball(Point3(-1.1, 0, 0), 0.6));
+    const auto a = Ball(Point3(-0.3, 0, 0), 0.5), b = Ball(Point3(0.7, 0, 0), 0.65);
+    f1 = Sampled(g, [=](const Point3 &p) { return std::min(a(p), b(p)); });
+  }
+};
+
+TEST(GrowShrink, TheEndsAndTheSwitchHoldX0X0uX1AndX1) {
+  const Balls m;
+  const GrowShrink morph(m.f0, m.f1);
+  ScalarField frame;
+  morph.Frame(0, frame);
+  EXPECT_EQ(Inside(frame), Inside(m.f0));
+  morph.Frame(1, frame);
+  EXPECT_EQ(Inside(frame), Inside(m.f1));
+  // At t* every node of X0 u X1 is inside or on the zero set (the farthest ones, d0 = L0,
+  // are reached exactly then), and no other node is inside.
+  morph.Frame(morph.Switch(), frame);
+  int outsideUnion = 0, insideElsewhere = 0;
+  for (std::size_t n = 0; n < frame.values.size(); ++n) {
+    const bool inUnion = m.f0.values[n] < 0 || m.f1.values[n] < 0;
+    outsideUnion += inUnion && frame.values[n] > 0;
+    insideElsewhere += !inUnion && frame.values[n] < 0;
+  }
+  EXPECT_EQ(outsideUnion, 0);
+  EXPECT_EQ(insideElsewhere, 0);
+  EXPECT_NEAR(morph.Switch(), morph.GrowLength() / (morph.GrowLength() + morph.WithdrawLength()), 1e-12);
+  EXPECT_GT(morph.Switch(), 0);
+  EXPECT_LT(morph.Switch(), 1);
+}
+
+TEST(GrowShrink, TheInsideSetGrowsUntilTheSwitchThenShrinks) {
+  const Balls m;
+  const GrowShrink morph(m.f0, m.f1);
+  ScalarField frame;
+  morph.Frame(0, frame);
+  std::vector<char> before = Inside(frame);
+  int grewAfter = 0, shrankBefore = 0;
+  for (int k = 1; k <= 40; ++k) {
+    const double t = k / 40.0;
+    morph.Frame(t, frame);
+    const std::vector<char> now = Inside(frame);
+    for (std::size_t n = 0; n < now.size(); ++n) {
+      if (t <= morph.Switch()) shrankBefore += before[n] && !now[n];
+      if (t - 1 / 40.0 >= morph.Switch()) grewAfter += !before[n] && now[n];
+    }
+    before = now;
+  }
+  EXPECT_EQ(shrankBefore, 0);
+  EXPECT_EQ(grewAfter, 0);
+}
+
+// The far target ball is reached by growth through the near one: the inside set is one
+// component at every frame.
+TEST(GrowShrink, NoPartIsBorn) {
+  const Balls m;
+  const GrowShrink morph(m.f0, m.f1);
+  ScalarField frame;
+  for (int k = 0; k <= 20; ++k) {
+    morph.Frame(k / 20.0, frame);
+    EXPECT_EQ(Measure(frame).components, 1) << "t = " << k / 20.0;
+  }
+}
+
+} // namespace

@@ -1,0 +1,105 @@
+// Surgery (surgery.h) on small hand-made cases: a sphere tracked in place under an event of
+// each kind, a torus whose neck pinches, and stretched edges split only where their ends
+// keep to f = 0.
+#include "core/surgery.h"
+#include "core/topology.h"
+#include "tests/support/fields.h"
+#include "tests/support/meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace eulermap;
+using namespace eulermap::testing;
+
+namespace {
+
+// Events cut by their kind where the tracked surface takes part: two sheets meeting lose a
+// disc each, whatever V's saddles say; an event far from every tracked triangle and a birth
+// are reported, not cut.
+TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;  // 16^3 nodes over [-1, 1]^3
+  const double cell = g.h;
+  Mesh sphere;
+  MakeSphere(sphere, g.Node(7, 7, 7), 0.3, 3);  // 2.25 cells from its centre
+  std::vector<Point3> points;
+  for (const Vertex &v : sphere.vert) points.push_back(v.cP());
+  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+  const ScalarField f = Quadric(g, g.Node(7, 7, 7), Point3(-1, -1, 1));  // a membrane through the centre, normal z
+  const std::vector<TopologyEvent> events = {EventAt(g, {14, 14, 14}, TopologyEventKind::HandleGained),  // 7 cells away
+                                             EventAt(g, {7, 7, 7}, TopologyEventKind::ComponentBorn),
+                                             EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)};
+  Surgery surgery(sphere, cell, cell, events, std::vector<EventCut>(events.size(), EventCut::Planned), false);
+  EXPECT_TRUE(surgery.Acts(0));
+  surgery.Step(0, {}, f, tracker);
+  ASSERT_EQ(surgery.Outcomes().size(), 3u);
+  EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
+  EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::NotACutKind);
+  EXPECT_EQ(surgery.Outcomes()[2].outcome, EventCut::Cut);
+  EXPECT_FALSE(surgery.Outcomes()[2].axisFromSaddle);
+  Mesh cut;
+  std::vector<EventSurgery> outcomes;
+  surgery.Build(sphere, tracker.Points(), cut, outcomes);
+  EXPECT_GT(outcomes[2].facesRemoved, 0);
+  EXPECT_GT(outcomes[2].rimLength, 0);
+  const Topology t = MeasureTopology(cut);  // both poles along z go: an annulus (sphere -> torus)
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  EXPECT_EQ(t.eulerCharacteristic, 0);
+  for (const Vertex &v : cut.vert)  // the poles went, the equator stayed
+    if (!v.IsD()) EXPECT_LT(std::abs(v.cP().Z() - g.Node(7, 7, 7).Z()), 0.29);
+}
+
+// A neck pinching: the band of faces crossing the plane normal to the neck goes.
+TEST(Surgery, PinchingNeckLosesABand) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
+  Mesh torus;
+  MakeTorus(torus, g.Node(7, 7, 7), 0.55, 0.2);
+  std::vector<Point3> points;
+  for (const Vertex &v : torus.vert) points.push_back(v.cP());
+  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+  const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
+  const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
+  Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned}, false);
+  surgery.Step(0, {}, f, tracker);
+  ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
+  Mesh cut;
+  std::vector<EventSurgery> outcomes;
+  surgery.Build(torus, tracker.Points(), cut, outcomes);
+  const Topology t = MeasureTopology(cut);  // a cylinder
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  EXPECT_EQ(t.eulerCharacteristic, 0);
+}
+
+// Stretched edges are split only where both ends still follow f = 0: a tracked point left
+// off its level set (the part of the surface it followed vanished without a cut) is no place
+// to refine, since every point put beside it is pulled back onto the far end.
+TEST(Surgery, StretchedEdgesAreSplitOnlyWhereTheirEndsKeepTheirLevel) {
+  const Grid g = Grid::Enclosing(Box3(Point3(-1, -1, -1), Point3(1, 1, 1)), 40);
+  Mesh source;
+  MakeSphere(source, Point3(0, 0, 0), 0.1, 2);
+  std::vector<Point3> points;
+  for (const Vertex &v : source.vert) points.push_back(v.cP() * 6.0);  // stretched 6 times, edges over 2 cells
+  for (const double radius : {0.6, 0.75}) {  // f = 0 through the points; 3 cells beyond them
+    ScalarField f(g, 0.0);
+    for (int k = 0; k < g.dims.Z(); ++k)
+      for (int j = 0; j < g.dims.Y(); ++j)
+        for (int i = 0; i < g.dims.X(); ++i) f(i, j, k) = g.Node(i, j, k).Norm() - radius;
+    Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+    Surgery surgery(source, g.h, g.h, {}, {}, true);  // splits stretched edges from the start
+    surgery.Step(0, {}, f, tracker);
+    Mesh cut;
+    std::vector<EventSurgery> outcomes;
+    surgery.Build(source, tracker.Points(), cut, outcomes);
+    if (radius == 0.6)
+      EXPECT_GT(surgery.PointsAdded(), int(source.vert.size()));
+    else
+      EXPECT_EQ(surgery.PointsAdded(), 0);
+  }
+}
+
+} // namespace
