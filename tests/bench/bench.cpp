@@ -21,6 +21,7 @@
 //   eulermap_bench parameters                               the README's parameter list
 //
 // `row` and `grid` print one line of the table (`|`-separated); `map` prints the report.
+#include "tests/support/correspondence.h"
 #include "tests/support/meshes.h"
 
 #include "core/parameters.h"
@@ -34,7 +35,6 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
-#include <tuple>
 #include <string>
 
 using namespace eulermap;
@@ -104,29 +104,15 @@ const char *StringFlag(int argc, char **argv, const char *name) {
   return nullptr;
 }
 
-// Each source vertex's image (TargetPosition of the cut vertex at its position; the cut
-// keeps the source's positions), for the correspondence benchmark (tests/bench/topkids.py).
+// Each source vertex's image and whether surgery kept it (correspondence.h), a line each,
+// for the correspondence benchmark (tests/bench/topkids.py).
 void WriteImages(const Mesh &source, Result &result, const char *path) {
-  std::map<std::tuple<double, double, double>, int> kept;
-  for (std::size_t n = 0; n < result.cut.vert.size(); ++n) {
-    const Point3 &p = result.cut.vert[n].cP();
-    kept.emplace(std::make_tuple(p.X(), p.Y(), p.Z()), int(n));
-  }
-  auto image = vcg::tri::Allocator<Mesh>::FindPerVertexAttribute<Point3>(result.cut, "TargetPosition");
+  std::vector<char> kept;
+  const std::vector<Point3> images = SourceImages(source, result, &kept);
   FILE *out = std::fopen(path, "w");
   if (!out) throw std::runtime_error(std::string("cannot write ") + path);
-  for (const Vertex &v : source.vert) {
-    const Point3 &p = v.cP();
-    auto found = kept.find(std::make_tuple(p.X(), p.Y(), p.Z()));
-    int n = found == kept.end() ? -1 : found->second;
-    if (n < 0) {
-      double nearest = 1e300;
-      for (std::size_t c = 0; c < result.cut.vert.size(); ++c)
-        if (const double d = vcg::SquaredDistance(result.cut.vert[c].cP(), p); d < nearest) nearest = d, n = int(c);
-    }
-    const Point3 &q = image[n];
-    std::fprintf(out, "%.9g %.9g %.9g %d\n", q.X(), q.Y(), q.Z(), found != kept.end());
-  }
+  for (std::size_t v = 0; v < images.size(); ++v)
+    std::fprintf(out, "%.9g %.9g %.9g %d\n", images[v].X(), images[v].Y(), images[v].Z(), int(kept[v]));
   std::fclose(out);
 }
 
