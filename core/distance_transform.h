@@ -33,5 +33,7 @@ namespace eulermap {
 //      and return what they have when it stops them.
 ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr,
                              const Interrupt &interrupt = Interrupt());
+// The same with the gradient in single precision.
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, GradientField *gradient, const Interrupt &interrupt = Interrupt());
 
 } // namespace eulermap

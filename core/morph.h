@@ -17,6 +17,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 
 #include <memory>
 #include <string>
@@ -38,8 +39,10 @@ class Morph {
   Mode mode() const;
   std::string Describe() const;  // e.g. "ARAP+TPS, 6 anchors (15 tetrahedra)"
 
-  // f(., t) at every grid node (Eq. 1), into `out` (resized to the grid).
-  void Frame(double t, ScalarField &out) const;
+  // f(., t) at every grid node (Eq. 1), into `out` (resized to the grid). interrupt: asked
+  // every kNodesBetweenPolls nodes of a warped frame (interrupt.h); once it says stop, `out`
+  // means nothing.
+  void Frame(double t, ScalarField &out, const Interrupt &interrupt = Interrupt()) const;
 
   std::vector<Point3> Anchors(double t) const;        // q_i(t); q_i(0) = a_i, q_i(1) = b_i
   // Velocity of space that the anchors impose between t0 and t1: the thin-plate warp

@@ -74,7 +74,10 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
     levels_.push_back(std::move(c));
   }
   for (Level &l : levels_) {
+    const bool finest = &l == &levels_.front();
     l.layout = RedBlackLayout(l.dims);
+    l.r.Resize(l.layout, 1);
+    if (finest) continue;  // its blocks, x and b come from the solver (Update, Precondition)
     l.data.Resize(l.layout);
     l.shift.Resize(l.layout);
     ForEachRun(l.layout, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
@@ -82,18 +85,18 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
     });
     l.inverse.Resize(l.layout);
     l.diagonal.Resize(l.layout, 1);
-    l.x.Resize(l.layout);
-    if (&l != &levels_.front()) l.ownB.Resize(l.layout), l.b = &l.ownB;
-    l.r.Resize(l.layout, 1);
-    if (&l != &levels_.front())
-      for (std::vector<float> &g : l.gathered) g.resize(l.Count());
+    l.ownX.Resize(l.layout), l.x = &l.ownX;
+    l.ownB.Resize(l.layout), l.b = &l.ownB;
+    for (std::vector<float> &g : l.gathered) g.resize(l.Count());
   }
 }
 
-void BlockMultigrid::Update() {
+void BlockMultigrid::Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<6> &D) {
+  g_ = &g, shift_ = &shift;
   for (std::size_t n = 1; n < levels_.size(); ++n)  // coarse D = R D (lumped)
-    FullWeighting<false>(levels_[n - 1].layout, levels_[n - 1].data, levels_[n].layout, levels_[n].data);
-  for (Level &l : levels_)
+    FullWeighting<false>(levels_[n - 1].layout, n == 1 ? D : levels_[n - 1].data, levels_[n].layout, levels_[n].data);
+  for (std::size_t n = 1; n < levels_.size(); ++n) {
+    Level &l = levels_[n];
     ForEachRun(l.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
       const float *d[6], *shift = l.shift.c[c][0].data() + run.first;
       float *inv[6], *diag[6];
@@ -114,6 +117,7 @@ void BlockMultigrid::Update() {
 #pragma omp simd
           for (long m = 0; m < run.count; ++m) diag[e][m] = d[e][m] + (e == 0 || e == 3 || e == 5 ? shift[m] : 0.0f);
     });
+  }
 }
 
 void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
@@ -121,7 +125,7 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
   const vcg::Point3i &cd = coarse.dims;
   ForEachRun(coarse.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
     for (int a = 0; a < 3; ++a) {
-      const float *x = coarse.x.c[c][a].data() + run.first;
+      const float *x = coarse.x->c[c][a].data() + run.first;
       float *to = coarse.gathered[a].data() + row + run.firstI;
       for (int n = 0; n < run.count; ++n) to[2 * n] = x[n];
     }
@@ -143,7 +147,7 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
           const float *r00 = g + nc * (J0 + cd[1] * K0), *r10 = g + nc * (J1 + cd[1] * K0), *r01 = g + nc * (J0 + cd[1] * K1),
                       *r11 = g + nc * (J1 + cd[1] * K1);
           for (int I = 0; I < nc; ++I) sum[I] = (r00[I] + r10[I]) + (r01[I] + r11[I]);
-          float *x = fine.x.c[0][a].data() + run.first;
+          float *x = fine.x->c[0][a].data() + run.first;
           if (run.firstI == 0)
             for (int n = 0; n < run.count; ++n) x[n] += 0.25f * sum[n];
           else
@@ -156,12 +160,36 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
 void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
   const long hy = l.layout.RowStride(), hz = l.layout.PlaneStride();
   const float alpha = float(l.alpha);
+  const bool finest = &l == &levels_.front();
   ForEachRun(l.layout, c, c, [&](int, int, int, const RedBlackLayout::Run &run, std::size_t) {
     const long w = run.west;
-    const float *b[3], *o[3], *inv[6];
+    const float *b[3], *o[3];
     float *x[3];
     for (int a = 0; a < 3; ++a)
-      b[a] = l.b->c[c][a].data() + run.first, o[a] = l.x.c[1 - c][a].data() + run.first, x[a] = l.x.c[c][a].data() + run.first;
+      b[a] = l.b->c[c][a].data() + run.first, o[a] = l.x->c[1 - c][a].data() + run.first, x[a] = l.x->c[c][a].data() + run.first;
+    if (finest) {
+      // (g g^T + s I)^-1 t = (t - g (g . t) / (s + |g|^2)) / s (Sherman-Morrison), s = alpha n_i + beta_i.
+      const float *g[3], *shift = shift_->c[c][0].data() + run.first;
+      for (int a = 0; a < 3; ++a) g[a] = g_->c[c][a].data() + run.first;
+      auto solve = [&](long m, float t0, float t1, float t2) {
+        const float gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+        const float k = (g[0][m] * t0 + g[1][m] * t1 + g[2][m] * t2) / (shift[m] + gg), inv = 1.0f / shift[m];
+        x[0][m] = (t0 - g[0][m] * k) * inv;
+        x[1][m] = (t1 - g[1][m] * k) * inv;
+        x[2][m] = (t2 - g[2][m] * k) * inv;
+      };
+      if (fromZero) {
+#pragma omp simd
+        for (long m = 0; m < run.count; ++m) solve(m, b[0][m], b[1][m], b[2][m]);
+      } else {
+#pragma omp simd
+        for (long m = 0; m < run.count; ++m)
+          solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
+                b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
+      }
+      return;
+    }
+    const float *inv[6];
     for (int e = 0; e < 6; ++e) inv[e] = l.inverse.c[c][e].data() + run.first;
     auto solve = [&](long m, float s0, float s1, float s2) {
       x[0][m] = inv[0][m] * s0 + inv[1][m] * s1 + inv[2][m] * s2;
@@ -183,13 +211,27 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
 void BlockMultigrid::Residual(Level &l) {
   const long hy = l.layout.RowStride(), hz = l.layout.PlaneStride();
   const float alpha = float(l.alpha);
+  const bool finest = &l == &levels_.front();
   ForEachRun(l.layout, 0, 0, [&](int, int, int, const RedBlackLayout::Run &run, std::size_t) {
     const long w = run.west;
-    const float *b[3], *o[3], *x[3], *d[6];
+    const float *b[3], *o[3], *x[3];
     float *r[3];
     for (int a = 0; a < 3; ++a)
-      b[a] = l.b->c[0][a].data() + run.first, o[a] = l.x.c[1][a].data() + run.first, x[a] = l.x.c[0][a].data() + run.first,
+      b[a] = l.b->c[0][a].data() + run.first, o[a] = l.x->c[1][a].data() + run.first, x[a] = l.x->c[0][a].data() + run.first,
       r[a] = l.r.c[0][a].data() + run.first;
+    if (finest) {  // the block times x: g (g . x) + s x
+      const float *g[3], *shift = shift_->c[0][0].data() + run.first;
+      for (int a = 0; a < 3; ++a) g[a] = g_->c[0][a].data() + run.first;
+#pragma omp simd
+      for (long m = 0; m < run.count; ++m) {
+        const float x0 = x[0][m], x1 = x[1][m], x2 = x[2][m], gx = g[0][m] * x0 + g[1][m] * x1 + g[2][m] * x2;
+        r[0][m] = b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz) - (g[0][m] * gx + shift[m] * x0);
+        r[1][m] = b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz) - (g[1][m] * gx + shift[m] * x1);
+        r[2][m] = b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz) - (g[2][m] * gx + shift[m] * x2);
+      }
+      return;
+    }
+    const float *d[6];
     for (int e = 0; e < 6; ++e) d[e] = l.diagonal.c[0][e].data() + run.first;
 #pragma omp simd
     for (long m = 0; m < run.count; ++m) {
@@ -220,19 +262,15 @@ void BlockMultigrid::Cycle(std::size_t n) {
 double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {
   Level &fine = levels_.front();
   const long n = long(fine.layout.Positions());
-  fine.b = &r;  // read in place
+  fine.b = &r, fine.x = &z;  // read and written in place
   Cycle(0);
-  return BlockSum(n, [&](long begin, long end) {  // z = x, then r . z
+  return BlockSum(n, [&](long begin, long end) {  // r . z
     double s = 0;
     for (int c = 0; c < 2; ++c)
       for (int a = 0; a < 3; ++a) {
-        const float *from = fine.x.c[c][a].data(), *v = r.c[c][a].data();
-        float *to = z.c[c][a].data();
+        const float *u = z.c[c][a].data(), *v = r.c[c][a].data();
 #pragma omp simd reduction(+ : s)
-        for (long m = begin; m < end; ++m) {
-          to[m] = from[m];
-          s += double(v[m]) * to[m];
-        }
+        for (long m = begin; m < end; ++m) s += double(v[m]) * u[m];
       }
     return s;
   });

@@ -226,7 +226,7 @@ Grid ChooseGrid(const Meshes &m, const Options &options, std::size_t samples) {
 // the last pull-back, f0's only for the samples' levels.
 struct Fields {
   ScalarField f0, f1;
-  VectorField gradient0, gradient1;
+  GradientField gradient0, gradient1;  // single precision: 12 bytes a node each
 };
 
 Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels, const Interrupt &interrupt) {
@@ -271,7 +271,8 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
             Surgery &surgery, Report &rep, const Stage &stage, const Interrupt &interrupt) {
   auto t0 = Clock::now();
   ScalarField fCur, fNext;
-  morph.Frame(0, fCur);
+  morph.Frame(0, fCur, interrupt);
+  if (interrupt.Cancelled()) throw Error("cancelled");
   rep.times.interp += Seconds(t0);
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
   VectorField V, anchorMotion;
@@ -280,7 +281,8 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
   for (int k = 0; k < options.steps; ++k) {
     stage(0.15 + 0.75 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
     t0 = Clock::now();
-    morph.Frame((k + 1) * dt, fNext);  // INT: f(., t_k+1), Eq. 1
+    morph.Frame((k + 1) * dt, fNext, interrupt);  // INT: f(., t_k+1), Eq. 1
+    if (interrupt.Cancelled()) throw Error("cancelled");
     if (options.anchorWeight > 0) {  // the prior of velocity.h: beta_i = anchorWeight * closeness
       morph.AnchorMotion(k * dt, (k + 1) * dt, options.anchorRadius * grid.h, anchorMotion, anchorWeight);
       for (double &w : anchorWeight.values) w *= options.anchorWeight;

@@ -39,32 +39,49 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
-    for (Vectors *v : {&g_, &b_, &x_, &r_, &p_, &q_}) v->Resize(layout_);
+    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_}) v->Resize(layout_);
     shift_.Resize(layout_);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
   if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims)) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
+  if (interrupt.Stop()) return VelocitySolve();  // the first step allocates (and zeroes) every array: seconds on big grids
+  // The multigrid's finest D_i = g g^T + beta_i I, in p's and q's arrays (free until the solve).
+  RedBlackArrays<6> D;
+  auto borrow = [&] {
+    for (int c = 0; c < 2; ++c)
+      for (int a = 0; a < 3; ++a) D.c[c][a].swap(p_.c[c][a]), D.c[c][3 + a].swap(q_.c[c][a]);
+  };
+  if (multigrid) borrow();
   // g = grad of (f_k + f_k+1)/2 (central differences, one-sided on the box's faces), f_t =
-  // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*)), shift = alpha n_i + beta_i;
-  // the multigrid's D_i = g g^T + beta_i I; x = V.
+  // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*), into r), shift = alpha n_i
+  // + beta_i; x = V.
   const vcg::Point3i d = grid_.dims;
   const double *f0 = fk.values.data(), *f1 = fk1.values.data();
   const Point3 *v = V.values.data(), *motion = withPrior ? prior.values.data() : nullptr;
   const double *weight = withPrior ? priorWeight.values.data() : nullptr;
+  const std::size_t sy = std::size_t(d.X()), sz = sy * d.Y();
+  const double whole = 0.5 / grid_.h, half = 0.5 * whole;  // 0.5: of the mean of the two frames
+  const int planesBetweenPolls = std::max(1, int(kNodesBetweenPolls / (sy * d.Y())));
   ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
+    if (j == 0 && c == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
     const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
+    // Central differences in y and z (one-sided on the box's faces): the same offsets along the row.
+    const std::size_t yLo = j > 0 ? sy : 0, yHi = j + 1 < d.Y() ? sy : 0, zLo = k > 0 ? sz : 0, zHi = k + 1 < d.Z() ? sz : 0;
+    const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
     float *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
-    float *D[6] = {};
+    float *De[6] = {};
     for (int a = 0; a < 3; ++a)
-      g[a] = g_.c[c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first;
+      g[a] = g_.c[c][a].data() + run.first, b[a] = r_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first;
     if (multigrid)
-      for (int e = 0; e < 6; ++e) D[e] = multigrid_->Data().c[c][e].data() + run.first;
+      for (int e = 0; e < 6; ++e) De[e] = D.c[c][e].data() + run.first;
     for (int t = 0; t < run.count; ++t) {
       const int i = run.firstI + 2 * t;
       const std::size_t idx = row + i;
       const bool xLo = i > 0, xHi = i + 1 < d.X();
-      const Point3 mean = (fk.NodeGradient(i, j, k) + fk1.NodeGradient(i, j, k)) * 0.5;
-      const double gx = mean[0], gy = mean[1], gz = mean[2];
+      const std::size_t lo = idx - xLo, hi = idx + xHi;
+      const double gx = ((f0[hi] + f1[hi]) - (f0[lo] + f1[lo])) * (xLo && xHi ? half : whole);
+      const double gy = ((f0[idx + yHi] + f1[idx + yHi]) - (f0[idx - yLo] + f1[idx - yLo])) * yScale;
+      const double gz = ((f0[idx + zHi] + f1[idx + zHi]) - (f0[idx - zLo] + f1[idx - zLo])) * zScale;
       const double beta = withPrior ? weight[idx] : 0, ft = (f1[idx] - f0[idx]) / dt;
       g[0][t] = gx, g[1][t] = gy, g[2][t] = gz;
       b[0][t] = -gx * ft, b[1][t] = -gy * ft, b[2][t] = -gz * ft;
@@ -72,12 +89,13 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
       x[0][t] = v[idx][0], x[1][t] = v[idx][1], x[2][t] = v[idx][2];
       shift[t] = alpha_ * int(across + xLo + xHi) + beta;
       if (multigrid) {
-        D[0][t] = float(gx * gx + beta), D[1][t] = float(gx * gy), D[2][t] = float(gx * gz);
-        D[3][t] = float(gy * gy + beta), D[4][t] = float(gy * gz), D[5][t] = float(gz * gz + beta);
+        De[0][t] = float(gx * gx + beta), De[1][t] = float(gx * gy), De[2][t] = float(gx * gz);
+        De[3][t] = float(gy * gy + beta), De[4][t] = float(gy * gz), De[5][t] = float(gz * gz + beta);
       }
     }
   });
-  const double bNorm = std::sqrt(Dot(b_, b_));
+  if (multigrid) multigrid_->Update(g_, shift_, D), borrow();  // p and q get their arrays back
+  const double bNorm = std::sqrt(Dot(r_, r_));
   VelocitySolve s;
   if (bNorm == 0) {  // no motion: V = 0 solves (*) exactly
     std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
@@ -85,11 +103,11 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   }
   if (interrupt.Stop()) return s;  // the frame and the system's assembly were a piece of work too
   if (method_ == Method::GaussSeidel) {
+    p_ = r_;  // b
     s = SolveGaussSeidel(x_, bNorm, interrupt);
   } else if (method_ == Method::ConjugateGradient) {
     s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); }, interrupt);
   } else {
-    multigrid_->Update();
     s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); },
                                interrupt);
   }
@@ -130,18 +148,19 @@ double VelocitySolver::Apply(const Vectors &x, Vectors &out) const {
   return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 
-double VelocitySolver::Residual(const Vectors &x, Vectors &r) const {
-  Apply(x, r);
-  const auto pb = Arrays(b_);
+double VelocitySolver::Residual(const Vectors &x, const Vectors &b, Vectors &r, Vectors &ax) const {
+  Apply(x, ax);
+  const auto pb = Arrays(b);
+  const auto pa = Arrays(ax);
   const auto pr = Arrays(r);
   return std::sqrt(BlockSum(long(layout_.Positions()), [&](long begin, long end) {
     double s = 0;
     for (int e = 0; e < 6; ++e) {
-      const float *b = pb[e];
+      const float *u = pb[e], *w = pa[e];
       float *v = pr[e];
 #pragma omp simd reduction(+ : s)
       for (long m = begin; m < end; ++m) {
-        v[m] = b[m] - v[m];
+        v[m] = u[m] - w[m];
         s += double(v[m]) * v[m];
       }
     }
@@ -180,7 +199,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   const long n = long(layout_.Positions());
   Vectors &r = r_, &z = q_, &p = p_, &q = q_;
   const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
-  double rNorm = Residual(x, r);
+  double rNorm = Residual(x, r, r, q);  // r held b
   double rz = precondition(r, z);
   p = z;
   while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
@@ -220,7 +239,8 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const I
   VelocitySolve s;
   const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
   const float alpha = float(alpha_);
-  double rNorm = Residual(x, r_);
+  const Vectors &rhs = p_;
+  double rNorm = Residual(x, rhs, r_, r_);
   // Residuals cost as much as a sweep: check every few sweeps.
   const int checkEvery = 10;
   while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
@@ -231,7 +251,7 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const I
           const float *o[3], *b[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
           float *v[3];
           for (int a = 0; a < 3; ++a)
-            v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first,
+            v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, b[a] = rhs.c[c][a].data() + run.first,
             g[a] = g_.c[c][a].data() + run.first;
           // Eq. 5 from (*): V = Vbar - g (g . Vbar + f_t) / (alpha n + |g|^2), with b = -g f_t,
           // written for a general b: solve (g g^T + c I) V = alpha sum + b, c = alpha n_i + beta_i.
@@ -247,7 +267,7 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const I
             v[2][m] = (r2 - g[2][m] * k) / shift[m];
           }
         });
-    rNorm = Residual(x, r_);
+    rNorm = Residual(x, rhs, r_, r_);
   }
   s.residual = rNorm / bNorm;
   return s;

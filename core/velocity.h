@@ -70,8 +70,8 @@ class VelocitySolver {
   VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition,
                                        const Interrupt &interrupt);
   VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm, const Interrupt &interrupt);
-  // r = b - A x, returns ||r||.
-  double Residual(const Vectors &x, Vectors &r) const;
+  // r = b - A x, with ax = A x on the way (r may be b or ax); returns ||r||.
+  double Residual(const Vectors &x, const Vectors &b, Vectors &r, Vectors &ax) const;
   // out = A x (the operator of (*)); returns x . A x.
   double Apply(const Vectors &x, Vectors &out) const;
   // z = the exact inverse of each node's block g g^T + (alpha n_i + beta_i) I times r; returns r . z.
@@ -81,13 +81,16 @@ class VelocitySolver {
   Method method_;
   double tolerance_;
   int maxIterations_;
-  // Per-step data of (*), in layout_: g, b = -g f_t + beta P, and shift = alpha n_i + beta_i per node.
+  // Per-step data of (*), in layout_: g and shift = alpha n_i + beta_i per node. The
+  // right-hand side b = -g f_t + beta P is assembled into r_ (conjugate gradients: r = b - A x
+  // in place; Gauss-Seidel: b moved to p_, which it does not use otherwise).
   Grid grid_;
   RedBlackLayout layout_;
-  Vectors g_, b_;
+  Vectors g_;
   RedBlackArrays<1> shift_;
   // Kept from step to step (same grid): the multigrid levels and the solvers' vectors (the
-  // preconditioned residual z shares q's: q = A p is dead once r is updated).
+  // preconditioned residual z shares q's: q = A p is dead once r is updated; the multigrid's
+  // finest D, restricted once a step, borrows p's and q's storage before the solve).
   std::unique_ptr<BlockMultigrid> multigrid_;
   Vectors x_, r_, p_, q_;
 };
