@@ -1,9 +1,9 @@
 #include "multigrid.h"
 
-#include "block_sum.h"
 #include "threads.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace eulermap {
 
@@ -157,16 +157,23 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
   }
 }
 
-void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
+void BlockMultigrid::Sweep(Level &l, int c, bool fromZero, std::vector<double> *plane) {
   const long hy = l.layout.RowStride(), hz = l.layout.PlaneStride();
   const float alpha = float(l.alpha);
   const bool finest = &l == &levels_.front();
-  ForEachRun(l.layout, c, c, [&](int, int, int, const RedBlackLayout::Run &run, std::size_t) {
+  ForEachRun(l.layout, c, c, [&](int, int k, int, const RedBlackLayout::Run &run, std::size_t) {
     const long w = run.west;
     const float *b[3], *o[3];
     float *x[3];
     for (int a = 0; a < 3; ++a)
       b[a] = l.b->c[c][a].data() + run.first, o[a] = l.x->c[1 - c][a].data() + run.first, x[a] = l.x->c[c][a].data() + run.first;
+    auto addDot = [&] {  // a second pass while the run is in cache (as velocity.cpp's Apply)
+      if (!plane) return;
+      double dot = 0;
+#pragma omp simd reduction(+ : dot)
+      for (long m = 0; m < run.count; ++m) dot += double(b[0][m]) * x[0][m] + double(b[1][m]) * x[1][m] + double(b[2][m]) * x[2][m];
+      (*plane)[k] += dot;
+    };
     if (finest) {
       // (g g^T + s I)^-1 t = (t - g (g . t) / (s + |g|^2)) / s (Sherman-Morrison), s = alpha n_i + beta_i.
       const float *g[3], *shift = shift_->c[c][0].data() + run.first;
@@ -187,7 +194,7 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
           solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
                 b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
       }
-      return;
+      return addDot();
     }
     const float *inv[6];
     for (int e = 0; e < 6; ++e) inv[e] = l.inverse.c[c][e].data() + run.first;
@@ -205,6 +212,7 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
         solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
               b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
     }
+    addDot();
   });
 }
 
@@ -243,11 +251,14 @@ void BlockMultigrid::Residual(Level &l) {
   });
 }
 
-void BlockMultigrid::Cycle(std::size_t n) {
+void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane) {
   Level &l = levels_[n];
   if (n + 1 == levels_.size()) {  // coarsest
     for (int s = 0; s < kCoarsestSweeps; ++s) Sweep(l, 0, s == 0), Sweep(l, 1, false);
-    for (int s = 0; s < kCoarsestSweeps; ++s) Sweep(l, 1, false), Sweep(l, 0, false);
+    for (int s = 0; s < kCoarsestSweeps; ++s) {
+      const bool last = s + 1 == kCoarsestSweeps;
+      Sweep(l, 1, false, last ? plane : nullptr), Sweep(l, 0, false, last ? plane : nullptr);
+    }
     return;
   }
   Sweep(l, 0, true), Sweep(l, 1, false);
@@ -256,24 +267,15 @@ void BlockMultigrid::Cycle(std::size_t n) {
   FullWeighting<true>(l.layout, l.r, c.layout, c.ownB);  // the residual is 0 at black nodes
   Cycle(n + 1);
   ProlongAdd(c, l);
-  Sweep(l, 1, false), Sweep(l, 0, false);
+  Sweep(l, 1, false, plane), Sweep(l, 0, false, plane);  // black then red: each colour's last sweep
 }
 
 double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {
   Level &fine = levels_.front();
-  const long n = long(fine.layout.Positions());
   fine.b = &r, fine.x = &z;  // read and written in place
-  Cycle(0);
-  return BlockSum(n, [&](long begin, long end) {  // r . z
-    double s = 0;
-    for (int c = 0; c < 2; ++c)
-      for (int a = 0; a < 3; ++a) {
-        const float *u = z.c[c][a].data(), *v = r.c[c][a].data();
-#pragma omp simd reduction(+ : s)
-        for (long m = begin; m < end; ++m) s += double(v[m]) * u[m];
-      }
-    return s;
-  });
+  std::vector<double> plane(fine.dims[2], 0.0);  // r . z by plane, summed in order (as velocity.cpp's Apply)
+  Cycle(0, &plane);
+  return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 
 } // namespace eulermap

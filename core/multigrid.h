@@ -68,7 +68,7 @@ class BlockMultigrid {
   // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
   // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0: never written;
   //      z is the finest level's iterate, so it must not be r); returns r . z
-  //      (block_sum.h: the same bits for any number of threads)
+  //      (summed by plane, in order: the same bits for any number of threads)
   double Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z);
 
   int Levels() const { return int(levels_.size()); }
@@ -93,11 +93,13 @@ class BlockMultigrid {
   };
 
   // x = (D + alpha n I)^-1 (b + alpha sum_j x_j) at the nodes of colour c (fromZero: every
-  // x_j taken as 0, for the first sweep of a cycle).
-  void Sweep(Level &l, int c, bool fromZero);
+  // x_j taken as 0, for the first sweep of a cycle); plane (when given): b . x over the swept
+  // nodes added by plane (each plane's runs in order, by one thread).
+  void Sweep(Level &l, int c, bool fromZero, std::vector<double> *plane = nullptr);
   void Residual(Level &l);                            // l.r = l.b - A l.x at red nodes
   void ProlongAdd(Level &coarse, Level &fine);  // fine.x += P coarse.x at red nodes
-  void Cycle(std::size_t level);
+  // plane (when given): b . x of the level's last sweeps, by plane.
+  void Cycle(std::size_t level, std::vector<double> *plane = nullptr);
 
   std::vector<Level> levels_;
   // The finest level's system (Update).

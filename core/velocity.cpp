@@ -200,19 +200,29 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   Vectors &r = r_, &z = q_, &p = p_, &q = q_;
   const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
   double rNorm = Residual(x, r, r, q);  // r held b
-  double rz = precondition(r, z);
-  p = z;
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
+  auto done = [&] { return rNorm <= tolerance_ * bNorm || s.iterations >= maxIterations_; };
+  double rz = done() ? 0 : precondition(r, z);
+  if (!done()) p = z;
+  // x += step p is put off to the next pass over p (p = z + beta p), or to the end.
+  auto advance = [&](float step) {
+#pragma omp parallel num_threads(Threads())
+    for (int e = 0; e < 6; ++e) {
+      float *u = px[e];
+      const float *v = pp[e];
+#pragma omp for simd schedule(static) nowait
+      for (long m = 0; m < n; ++m) u[m] += v[m] * step;
+    }
+  };
+  while (!done() && !interrupt.Stop()) {
     const double step = rz / Apply(p, q);  // q = A p
     const float stepf = float(step);
-    rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += step p, r -= step q, then |r|^2
+    rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // r -= step q, then |r|^2
       double t = 0;
       for (int e = 0; e < 6; ++e) {
-        float *u = px[e], *v = pr[e];
-        const float *dp = pp[e], *dq = pq[e];
+        float *v = pr[e];
+        const float *dq = pq[e];
 #pragma omp simd reduction(+ : t)
         for (long m = begin; m < end; ++m) {
-          u[m] += dp[m] * stepf;
           v[m] -= dq[m] * stepf;
           t += double(v[m]) * v[m];
         }
@@ -220,15 +230,22 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
       return t;
     }));
     ++s.iterations;
+    if (done()) {  // no preconditioning for a direction that is not taken
+      advance(stepf);
+      break;
+    }
     const double rzNext = precondition(r, z);
     const float beta = float(rzNext / rz);
     rz = rzNext;
 #pragma omp parallel num_threads(Threads())
-    for (int e = 0; e < 6; ++e) {  // p = z + beta p
-      float *u = pp[e];
+    for (int e = 0; e < 6; ++e) {  // x += step p, then p = z + beta p
+      float *u = pp[e], *w = px[e];
       const float *v = pz[e];
 #pragma omp for simd schedule(static) nowait
-      for (long m = 0; m < n; ++m) u[m] = v[m] + u[m] * beta;
+      for (long m = 0; m < n; ++m) {
+        w[m] += u[m] * stepf;
+        u[m] = v[m] + u[m] * beta;
+      }
     }
   }
   s.residual = rNorm / bNorm;

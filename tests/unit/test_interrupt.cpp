@@ -74,7 +74,27 @@ void ExpectCancelledAt(bool (*at)(const std::string &), int n) {
 }
 
 TEST(Interrupt, CancelInsideAVelocitySolveEndsTheMap) {
-  ExpectCancelledAt(IsStep, 2);  // the first iteration's poll of step 1
+  ExpectCancelledAt(IsStep, 5);  // step 1: the stage, the allocation, the assembly, the system, then the first iteration
+}
+
+// A step of a big grid spends seconds before its first iteration (the first step allocates
+// and zeroes the solver's arrays, every step assembles its system): a call after the
+// allocation, every kNodesBetweenPolls nodes of the assembly (here one plane group: one
+// call) and one once the system is assembled.
+TEST(Interrupt, ProgressComesWhileAStepAllocatesAndAssembles) {
+  Case c;
+  int stepCalls = 0;
+  Result result;
+  ComputeMap(c.source, c.target, {}, c.options, result, [&](double, const std::string &stage) {
+    stepCalls += IsStep(stage);
+    return true;
+  });
+  EXPECT_GE(stepCalls, 3 * c.options.steps + 1 + result.report.solverFigures.totalIterations)
+      << "per step: the stage, the assembly, the assembled system, each iteration; the allocation once";
+}
+
+TEST(Interrupt, CancelWhileAVelocitySystemIsAssembledEndsTheMap) {
+  ExpectCancelledAt(IsStep, 3);  // step 1: the stage, the allocation, then the assembly's poll
 }
 
 TEST(Interrupt, CancelInsideTheDistanceSweepsEndsTheMap) {
