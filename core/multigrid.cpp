@@ -10,6 +10,7 @@ namespace eulermap {
 namespace {
 constexpr std::size_t kCoarsestNodes = 1000;
 constexpr int kCoarsestSweeps = 20;
+constexpr int kCoarseSweeps = 1;  // red-black sweep pairs each way on the levels between (the finest: 1)
 
 // Full weighting (R = P^T / 8) of the values from, on the fine layout, onto the coarse one:
 // coarse node (I, J, K) takes w(di) w(dj) w(dk) / 8 of fine node (2I + di, 2J + dj, 2K + dk),
@@ -261,13 +262,17 @@ void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane) {
     }
     return;
   }
-  Sweep(l, 0, true), Sweep(l, 1, false);
+  const int sweeps = n == 0 ? 1 : kCoarseSweeps;
+  for (int s = 0; s < sweeps; ++s) Sweep(l, 0, s == 0), Sweep(l, 1, false);
   Residual(l);
   Level &c = levels_[n + 1];
   FullWeighting<true>(l.layout, l.r, c.layout, c.ownB);  // the residual is 0 at black nodes
   Cycle(n + 1);
   ProlongAdd(c, l);
-  Sweep(l, 1, false, plane), Sweep(l, 0, false, plane);  // black then red: each colour's last sweep
+  for (int s = 0; s < sweeps; ++s) {
+    const bool last = s + 1 == sweeps;  // each colour's last sweep
+    Sweep(l, 1, false, last ? plane : nullptr), Sweep(l, 0, false, last ? plane : nullptr);
+  }
 }
 
 double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {

@@ -39,7 +39,8 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
-    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_}) v->Resize(layout_);
+    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_);
+    solves_ = 0;
     shift_.Resize(layout_);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
@@ -61,6 +62,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const double *weight = withPrior ? priorWeight.values.data() : nullptr;
   const std::size_t sy = std::size_t(d.X()), sz = sy * d.Y();
   const double whole = 0.5 / grid_.h, half = 0.5 * whole;  // 0.5: of the mean of the two frames
+  const bool extrapolate = solves_++ >= 2;
   const int planesBetweenPolls = std::max(1, int(kNodesBetweenPolls / (sy * d.Y())));
   ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
     if (j == 0 && c == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
@@ -68,10 +70,11 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
     // Central differences in y and z (one-sided on the box's faces): the same offsets along the row.
     const std::size_t yLo = j > 0 ? sy : 0, yHi = j + 1 < d.Y() ? sy : 0, zLo = k > 0 ? sz : 0, zHi = k + 1 < d.Z() ? sz : 0;
     const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
-    float *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
+    float *g[3], *b[3], *x[3], *last[3], *shift = shift_.c[c][0].data() + run.first;
     float *De[6] = {};
     for (int a = 0; a < 3; ++a)
-      g[a] = g_.c[c][a].data() + run.first, b[a] = r_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first;
+      g[a] = g_.c[c][a].data() + run.first, b[a] = r_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first,
+      last[a] = previous_.c[c][a].data() + run.first;
     if (multigrid)
       for (int e = 0; e < 6; ++e) De[e] = D.c[c][e].data() + run.first;
     for (int t = 0; t < run.count; ++t) {
@@ -86,7 +89,11 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
       g[0][t] = gx, g[1][t] = gy, g[2][t] = gz;
       b[0][t] = -gx * ft, b[1][t] = -gy * ft, b[2][t] = -gz * ft;
       if (withPrior) b[0][t] += motion[idx][0] * beta, b[1][t] += motion[idx][1] * beta, b[2][t] += motion[idx][2] * beta;
-      x[0][t] = v[idx][0], x[1][t] = v[idx][1], x[2][t] = v[idx][2];
+      for (int a = 0; a < 3; ++a) {
+        const float now = float(v[idx][a]);
+        x[a][t] = extrapolate ? 2 * now - last[a][t] : now;
+        last[a][t] = now;
+      }
       shift[t] = alpha_ * int(across + xLo + xHi) + beta;
       if (multigrid) {
         De[0][t] = float(gx * gx + beta), De[1][t] = float(gx * gy), De[2][t] = float(gx * gz);
@@ -108,9 +115,11 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   } else if (method_ == Method::ConjugateGradient) {
     s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); }, interrupt);
   } else {
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); },
+    // A poll before each V-cycle too: an iteration is two halves of about equal work.
+    s = SolveConjugateGradient(x_, bNorm, [&](const Vectors &r, Vectors &z) { return interrupt.Stop(), multigrid_->Precondition(r, z); },
                                interrupt);
   }
+  interrupt.Stop();  // the solve's last iteration
   Point3 *out = V.values.data();
   ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
     const float *x[3] = {x_.c[c][0].data() + run.first, x_.c[c][1].data() + run.first, x_.c[c][2].data() + run.first};

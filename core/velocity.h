@@ -26,7 +26,9 @@
 //     Vbar = sum_j V_j / n_i; red-black ordering so that both colours run in parallel;
 //   - conjugate gradients preconditioned by the exact inverse of each node's 3x3 block;
 //   - conjugate gradients preconditioned by a multigrid V-cycle (multigrid.h), the default.
-// All start from the V passed in (the previous step's: a warm start).
+// All start from the V passed in (the previous step's: a warm start), extrapolated in time
+// from the third solve on a grid: x = 2 V_k-1 - V_k-2 (V changes smoothly from step to step,
+// so the start is second-order close and most steps need one or two iterations).
 #pragma once
 
 #include "field.h"
@@ -52,8 +54,9 @@ class VelocitySolver {
 
   // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
   //      and zeroed when its grid differs); prior P and its weights beta on the same
-  //      grid, or empty fields for none; interrupt, asked once the system is assembled and
-  //      before each iteration (interrupt.h)
+  //      grid, or empty fields for none; interrupt, asked once the first step's arrays are
+  //      allocated, every kNodesBetweenPolls nodes of the assembly and once it is done, before
+  //      each iteration and each V-cycle, and at the end (interrupt.h)
   // out: V = V_k, and the solve's figures; where the interrupt stops it, the iterate it had
   VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField(),
@@ -93,6 +96,10 @@ class VelocitySolver {
   // finest D, restricted once a step, borrows p's and q's storage before the solve).
   std::unique_ptr<BlockMultigrid> multigrid_;
   Vectors x_, r_, p_, q_;
+  // The start of the last solve: V_k-2, the solution before the last, once two solves are done
+  // on this grid (the first one starts from the V given: 0 in the pipeline).
+  Vectors previous_;
+  int solves_ = 0;
 };
 
 } // namespace eulermap

@@ -74,7 +74,7 @@ void ExpectCancelledAt(bool (*at)(const std::string &), int n) {
 }
 
 TEST(Interrupt, CancelInsideAVelocitySolveEndsTheMap) {
-  ExpectCancelledAt(IsStep, 5);  // step 1: the stage, the allocation, the assembly, the system, then the first iteration
+  ExpectCancelledAt(IsStep, 6);  // step 1: the stage, the allocation, the assembly, the system, the first V-cycle, the first iteration
 }
 
 // A step of a big grid spends seconds before its first iteration (the first step allocates
