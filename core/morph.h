@@ -49,8 +49,9 @@ class Morph {
   // q_i(t0) -> q_i(t1) minus the identity, over (t1 - t0), at every grid node, and
   // each node's closeness exp(-(d / radius)^2) to the nearest anchor q_i(t0) (d and
   // radius in world units); empty fields in linear-blend mode. The velocity solve's
-  // prior (velocity.h).
-  void AnchorMotion(double t0, double t1, double radius, VectorField &velocity, ScalarField &closeness) const;
+  // prior (velocity.h). interrupt: as Frame's.
+  void AnchorMotion(double t0, double t1, double radius, VectorField &velocity, ScalarField &closeness,
+                    const Interrupt &interrupt = Interrupt()) const;
   Point3 WarpToSource(double t, const Point3 &p) const;  // W_t->0
   Point3 WarpToTarget(double t, const Point3 &p) const;  // W_t->1
 

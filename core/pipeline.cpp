@@ -284,7 +284,8 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
     morph.Frame((k + 1) * dt, fNext, interrupt);  // INT: f(., t_k+1), Eq. 1
     if (interrupt.Cancelled()) throw Error("cancelled");
     if (options.anchorWeight > 0) {  // the prior of velocity.h: beta_i = anchorWeight * closeness
-      morph.AnchorMotion(k * dt, (k + 1) * dt, options.anchorRadius * grid.h, anchorMotion, anchorWeight);
+      morph.AnchorMotion(k * dt, (k + 1) * dt, options.anchorRadius * grid.h, anchorMotion, anchorWeight, interrupt);
+      if (interrupt.Cancelled()) throw Error("cancelled");
       for (double &w : anchorWeight.values) w *= options.anchorWeight;
     }
     rep.times.interp += Seconds(t0);

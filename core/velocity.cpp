@@ -40,7 +40,6 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
     for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_);
-    solves_ = 0;
     shift_.Resize(layout_);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
@@ -62,7 +61,6 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const double *weight = withPrior ? priorWeight.values.data() : nullptr;
   const std::size_t sy = std::size_t(d.X()), sz = sy * d.Y();
   const double whole = 0.5 / grid_.h, half = 0.5 * whole;  // 0.5: of the mean of the two frames
-  const bool extrapolate = solves_++ >= 2;
   const int planesBetweenPolls = std::max(1, int(kNodesBetweenPolls / (sy * d.Y())));
   ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
     if (j == 0 && c == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
@@ -91,8 +89,8 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
       if (withPrior) b[0][t] += motion[idx][0] * beta, b[1][t] += motion[idx][1] * beta, b[2][t] += motion[idx][2] * beta;
       for (int a = 0; a < 3; ++a) {
         const float now = float(v[idx][a]);
-        x[a][t] = extrapolate ? 2 * now - last[a][t] : now;
-        last[a][t] = now;
+        x[a][t] = now;
+        last[a][t] = now - last[a][t];  // d = V_k-1 - V_k-2
       }
       shift[t] = alpha_ * int(across + xLo + xHi) + beta;
       if (multigrid) {
@@ -110,6 +108,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   }
   if (interrupt.Stop()) return s;  // the frame and the system's assembly were a piece of work too
   if (method_ == Method::GaussSeidel) {
+    previous_ = x_;  // V_k-1 (Gauss-Seidel starts from it: the comparison of the paper's update)
     p_ = r_;  // b
     s = SolveGaussSeidel(x_, bNorm, interrupt);
   } else if (method_ == Method::ConjugateGradient) {
@@ -208,7 +207,30 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   const long n = long(layout_.Positions());
   Vectors &r = r_, &z = q_, &p = p_, &q = q_;
   const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
-  double rNorm = Residual(x, r, r, q);  // r held b
+  // The start: x = V_k-1 + theta d along d = V_k-1 - V_k-2 (in previous_), theta minimising the
+  // error's energy along d: theta = r . d / d . A d with r = b - A V_k-1 (theta = 1: the linear
+  // extrapolation in time; never a worse start than V_k-1). previous_ then holds V_k-1.
+  const auto pd = Arrays(previous_);
+  const double dAd = Apply(previous_, q);  // q = A d
+  Residual(x, r, r, p);  // r held b; p: scratch
+  const double theta = dAd > 0 ? Dot(r, previous_) / dAd : 0;
+  const float thetaf = float(theta);
+  double rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += theta d, r -= theta A d, |r|^2
+    double t = 0;
+    for (int e = 0; e < 6; ++e) {
+      float *u = px[e], *v = pr[e], *d = pd[e];
+      const float *dq = pq[e];
+#pragma omp simd reduction(+ : t)
+      for (long m = begin; m < end; ++m) {
+        const float start = u[m];
+        u[m] = start + d[m] * thetaf;
+        d[m] = start;
+        v[m] -= dq[m] * thetaf;
+        t += double(v[m]) * v[m];
+      }
+    }
+    return t;
+  }));
   auto done = [&] { return rNorm <= tolerance_ * bNorm || s.iterations >= maxIterations_; };
   double rz = done() ? 0 : precondition(r, z);
   if (!done()) p = z;

@@ -26,9 +26,11 @@
 //     Vbar = sum_j V_j / n_i; red-black ordering so that both colours run in parallel;
 //   - conjugate gradients preconditioned by the exact inverse of each node's 3x3 block;
 //   - conjugate gradients preconditioned by a multigrid V-cycle (multigrid.h), the default.
-// All start from the V passed in (the previous step's: a warm start), extrapolated in time
-// from the third solve on a grid: x = 2 V_k-1 - V_k-2 (V changes smoothly from step to step,
-// so the start is second-order close and most steps need one or two iterations).
+// All start from the V passed in (the previous step's: a warm start); the conjugate gradients
+// move it along d = V_k-1 - V_k-2 (the start of the solve before) to the least error energy
+// on that line: x = V_k-1 + theta d, theta = r . d / d . A d. Where V changes smoothly from
+// step to step theta is near 1 (the linear extrapolation in time), and the start is never
+// worse than V_k-1 in the energy norm.
 #pragma once
 
 #include "field.h"
@@ -96,10 +98,8 @@ class VelocitySolver {
   // finest D, restricted once a step, borrows p's and q's storage before the solve).
   std::unique_ptr<BlockMultigrid> multigrid_;
   Vectors x_, r_, p_, q_;
-  // The start of the last solve: V_k-2, the solution before the last, once two solves are done
-  // on this grid (the first one starts from the V given: 0 in the pipeline).
+  // V_k-2, the start of the last solve (during the assembly and the start: d = V_k-1 - V_k-2).
   Vectors previous_;
-  int solves_ = 0;
 };
 
 } // namespace eulermap
