@@ -394,6 +394,7 @@ MorphEvents FindEvents(const Morph &morph, const Meshes &m, const Grid &grid, co
                        const Stage &stage) {
   const auto t0 = Clock::now();
   MorphEvents e;
+  stage(0.05, "topology along the morph");  // its first call comes after a whole frame and its topology
   e.history =
       TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
   e.plan = PlanSurgery(e.history.events, e.history.frames.front(), e.history.frames.back(), m.sourceSurface,
