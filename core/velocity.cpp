@@ -62,43 +62,75 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const std::size_t sy = std::size_t(d.X()), sz = sy * d.Y();
   const double whole = 0.5 / grid_.h, half = 0.5 * whole;  // 0.5: of the mean of the two frames
   const int planesBetweenPolls = std::max(1, int(kNodesBetweenPolls / (sy * d.Y())));
-  ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
-    if (j == 0 && c == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
-    const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
-    // Central differences in y and z (one-sided on the box's faces): the same offsets along the row.
-    const std::size_t yLo = j > 0 ? sy : 0, yHi = j + 1 < d.Y() ? sy : 0, zLo = k > 0 ? sz : 0, zHi = k + 1 < d.Z() ? sz : 0;
-    const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
-    float *g[3], *b[3], *x[3], *last[3], *shift = shift_.c[c][0].data() + run.first;
-    float *De[6] = {};
-    for (int a = 0; a < 3; ++a)
-      g[a] = g_.c[c][a].data() + run.first, b[a] = r_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first,
-      last[a] = previous_.c[c][a].data() + run.first;
-    if (multigrid)
-      for (int e = 0; e < 6; ++e) De[e] = D.c[c][e].data() + run.first;
-    for (int t = 0; t < run.count; ++t) {
-      const int i = run.firstI + 2 * t;
-      const std::size_t idx = row + i;
-      const bool xLo = i > 0, xHi = i + 1 < d.X();
-      const std::size_t lo = idx - xLo, hi = idx + xHi;
-      const double gx = ((f0[hi] + f1[hi]) - (f0[lo] + f1[lo])) * (xLo && xHi ? half : whole);
-      const double gy = ((f0[idx + yHi] + f1[idx + yHi]) - (f0[idx - yLo] + f1[idx - yLo])) * yScale;
-      const double gz = ((f0[idx + zHi] + f1[idx + zHi]) - (f0[idx - zLo] + f1[idx - zLo])) * zScale;
-      const double beta = withPrior ? weight[idx] : 0, ft = (f1[idx] - f0[idx]) / dt;
-      g[0][t] = gx, g[1][t] = gy, g[2][t] = gz;
-      b[0][t] = -gx * ft, b[1][t] = -gy * ft, b[2][t] = -gz * ft;
-      if (withPrior) b[0][t] += motion[idx][0] * beta, b[1][t] += motion[idx][1] * beta, b[2][t] += motion[idx][2] * beta;
-      for (int a = 0; a < 3; ++a) {
-        const float now = float(v[idx][a]);
-        x[a][t] = now;
-        last[a][t] = now - last[a][t];  // d = V_k-1 - V_k-2
+  const long nx = d.X();
+#pragma omp parallel if (layout_.Nodes() >= kParallelNodes) num_threads(Threads())
+  {
+    // A real row at a time: its nodes in Grid::Index order first (contiguous: vectorised),
+    // then split by colour into the layout's arrays.
+    std::vector<float> G[3], B[3], X[3], S(nx), Dr[6];
+    for (int a = 0; a < 3; ++a) G[a].resize(nx), B[a].resize(nx), X[a].resize(nx);
+    for (int e = 0; e < 6; ++e) Dr[e].resize(nx);
+    const std::vector<double> none(withPrior ? 0 : nx, 0.0);  // beta without a prior
+#pragma omp for schedule(static)
+    for (int k = 0; k < d.Z(); ++k)
+      for (int j = 0; j < d.Y(); ++j) {
+        if (j == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
+        const std::size_t row = sy * (j + std::size_t(d.Y()) * k);
+        const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
+        // Central differences (one-sided on the box's faces); in y and z the same offsets along the row.
+        const long yLo = j > 0 ? long(sy) : 0, yHi = j + 1 < d.Y() ? long(sy) : 0, zLo = k > 0 ? long(sz) : 0,
+                   zHi = k + 1 < d.Z() ? long(sz) : 0;
+        const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
+        const double *a0 = f0 + row, *a1 = f1 + row, *w = withPrior ? weight + row : none.data();
+        const Point3 *vr = v + row;
+        // Node i with x-neighbours lo, hi, the x-difference's scale and its neighbour count n.
+        auto node = [&](long i, long lo, long hi, double xScale, int n) {
+          const double gx = ((a0[hi] + a1[hi]) - (a0[lo] + a1[lo])) * xScale;
+          const double gy = ((a0[i + yHi] + a1[i + yHi]) - (a0[i - yLo] + a1[i - yLo])) * yScale;
+          const double gz = ((a0[i + zHi] + a1[i + zHi]) - (a0[i - zLo] + a1[i - zLo])) * zScale;
+          const double beta = w[i], ft = (a1[i] - a0[i]) / dt;
+          G[0][i] = float(gx), G[1][i] = float(gy), G[2][i] = float(gz);
+          B[0][i] = float(-gx * ft), B[1][i] = float(-gy * ft), B[2][i] = float(-gz * ft);
+          X[0][i] = float(vr[i][0]), X[1][i] = float(vr[i][1]), X[2][i] = float(vr[i][2]);
+          S[i] = float(alpha_ * n + beta);
+          Dr[0][i] = float(gx * gx + beta), Dr[1][i] = float(gx * gy), Dr[2][i] = float(gx * gz);
+          Dr[3][i] = float(gy * gy + beta), Dr[4][i] = float(gy * gz), Dr[5][i] = float(gz * gz + beta);
+        };
+        if (nx == 1) {
+          node(0, 0, 0, whole, across);
+        } else {
+          node(0, 0, 1, whole, across + 1);
+#pragma omp simd
+          for (long i = 1; i < nx - 1; ++i) node(i, i - 1, i + 1, half, across + 2);
+          node(nx - 1, nx - 2, nx - 1, whole, across + 1);
+        }
+        if (withPrior)
+          for (long i = 0; i < nx; ++i)
+            for (int a = 0; a < 3; ++a) B[a][i] = float(B[a][i] + motion[row + i][a] * weight[row + i]);
+        for (int c = 0; c < 2; ++c) {
+          const RedBlackLayout::Run run = layout_.RowRun(c, j, k);
+          const std::size_t m0 = run.first;
+          const int i0 = run.firstI;
+          for (int a = 0; a < 3; ++a) {
+            float *g = g_.c[c][a].data() + m0, *b = r_.c[c][a].data() + m0, *x = x_.c[c][a].data() + m0,
+                  *last = previous_.c[c][a].data() + m0;
+            const float *Ga = G[a].data() + i0, *Ba = B[a].data() + i0, *Xa = X[a].data() + i0;
+            for (int t = 0; t < run.count; ++t) {
+              g[t] = Ga[2 * t], b[t] = Ba[2 * t], x[t] = Xa[2 * t];
+              last[t] = Xa[2 * t] - last[t];  // d = V_k-1 - V_k-2
+            }
+          }
+          float *shift = shift_.c[c][0].data() + m0;
+          for (int t = 0; t < run.count; ++t) shift[t] = S[i0 + 2 * t];
+          if (multigrid)
+            for (int e = 0; e < 6; ++e) {
+              float *De = D.c[c][e].data() + m0;
+              const float *De0 = Dr[e].data() + i0;
+              for (int t = 0; t < run.count; ++t) De[t] = De0[2 * t];
+            }
+        }
       }
-      shift[t] = alpha_ * int(across + xLo + xHi) + beta;
-      if (multigrid) {
-        De[0][t] = float(gx * gx + beta), De[1][t] = float(gx * gy), De[2][t] = float(gx * gz);
-        De[3][t] = float(gy * gy + beta), De[4][t] = float(gy * gz), De[5][t] = float(gz * gz + beta);
-      }
-    }
-  });
+  }
   if (multigrid) multigrid_->Update(g_, shift_, D), borrow();  // p and q get their arrays back
   const double bNorm = std::sqrt(Dot(r_, r_));
   VelocitySolve s;
