@@ -59,6 +59,59 @@ void FullWeighting(const RedBlackLayout &fine, const RedBlackArrays<N> &from, co
       }
   }
 }
+
+// D_i = g_i g_i^T + beta_i I (beta null: 0) at every fine node, full weighting onto the coarse
+// layout (as FullWeighting<false, 6> of D, without storing the fine D): tap by tap, the six
+// products accumulated along the coarse row.
+void RestrictBlocks(const RedBlackLayout &fine, const RedBlackArrays<3> &g, const RedBlackArrays<1> *beta,
+                    const RedBlackLayout &coarse, RedBlackArrays<6> &to) {
+  int colour[27], taps = 0;
+  long offset[27];
+  float weight[27];
+  for (int dk = -1; dk <= 1; ++dk)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        colour[taps] = (di + dj + dk) & 1;
+        offset[taps] = (di == 1) + dj * fine.RowStride() + dk * fine.PlaneStride();
+        weight[taps++] = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
+      }
+  const int nc = coarse.dims[0];
+#pragma omp parallel if (fine.Nodes() >= kParallelNodes) num_threads(Threads())
+  {
+    std::vector<float> rows[6];
+    for (std::vector<float> &r : rows) r.resize(nc);
+#pragma omp for schedule(static)
+    for (int K = 0; K < coarse.dims[2]; ++K)
+      for (int J = 0; J < coarse.dims[1]; ++J) {
+        const std::size_t centre = fine.Position(0, 2 * J, 2 * K), first = coarse.Position(0, J, K);
+        float *r0 = rows[0].data(), *r1 = rows[1].data(), *r2 = rows[2].data(), *r3 = rows[3].data(), *r4 = rows[4].data(),
+              *r5 = rows[5].data();
+        for (std::vector<float> &r : rows) std::fill(r.begin(), r.end(), 0.0f);
+        for (int t = 0; t < taps; ++t) {
+          const std::size_t at = centre + offset[t];
+          const float *x = g.c[colour[t]][0].data() + at, *y = g.c[colour[t]][1].data() + at, *z = g.c[colour[t]][2].data() + at;
+          const float w = weight[t];
+#pragma omp simd
+          for (int I = 0; I < nc; ++I) {
+            const float a = x[I], b = y[I], c = z[I];
+            r0[I] += w * (a * a), r1[I] += w * (a * b), r2[I] += w * (a * c);
+            r3[I] += w * (b * b), r4[I] += w * (b * c), r5[I] += w * (c * c);
+          }
+          if (beta) {
+            const float *s = beta->c[colour[t]][0].data() + at;
+#pragma omp simd
+            for (int I = 0; I < nc; ++I) r0[I] += w * s[I], r3[I] += w * s[I], r5[I] += w * s[I];
+          }
+        }
+        // Coarse node (I, J, K): colour I + J + K (mod 2), position that of I = 0 plus (I + 1) / 2.
+        for (int e = 0; e < 6; ++e) {
+          float *even = to.c[(J + K) & 1][e].data() + first, *odd = to.c[(J + K + 1) & 1][e].data() + first;
+          for (int I = 0; I < nc; I += 2) even[I / 2] = rows[e][I];
+          for (int I = 1; I < nc; I += 2) odd[(I + 1) / 2] = rows[e][I];
+        }
+      }
+  }
+}
 } // namespace
 
 BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
@@ -92,10 +145,13 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
   }
 }
 
-void BlockMultigrid::Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<6> &D) {
+void BlockMultigrid::Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<1> *beta) {
   g_ = &g, shift_ = &shift;
   for (std::size_t n = 1; n < levels_.size(); ++n)  // coarse D = R D (lumped)
-    FullWeighting<false>(levels_[n - 1].layout, n == 1 ? D : levels_[n - 1].data, levels_[n].layout, levels_[n].data);
+    if (n == 1)
+      RestrictBlocks(levels_[0].layout, g, beta, levels_[1].layout, levels_[1].data);
+    else
+      FullWeighting<false>(levels_[n - 1].layout, levels_[n - 1].data, levels_[n].layout, levels_[n].data);
   for (std::size_t n = 1; n < levels_.size(); ++n) {
     Level &l = levels_[n];
     ForEachRun(l.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {

@@ -59,11 +59,11 @@ class BlockMultigrid {
   // in:  the finest grid's system, in RedBlackLayout(Dims()) (ghosts 0): per node g_i and
   //      shift_i = alpha n_i + beta_i, its block being g g^T + shift I (read by every V-cycle
   //      until the next Update, not copied: they must stay alive and unchanged till then), and
-  //      D_i = g g^T + beta_i I (read here only, restricted onto the coarse levels: it may be
-  //      borrowed storage)
-  // out: the coarse levels' D and their block inverses. The finest level stores no blocks:
-  //      its sweeps invert g g^T + shift I by the Sherman-Morrison formula, from g and shift.
-  void Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<6> &D);
+  //      beta_i (null: 0; read here only: it may be borrowed storage)
+  // out: the coarse levels' D (the first one's restricted from D_i = g g^T + beta_i I, formed
+  //      tap by tap) and their block inverses. The finest level stores no blocks: its sweeps
+  //      invert g g^T + shift I by the Sherman-Morrison formula, from g and shift.
+  void Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<1> *beta = nullptr);
 
   // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
   // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0: never written;

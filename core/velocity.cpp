@@ -45,13 +45,14 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
   if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims)) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
   if (interrupt.Stop()) return VelocitySolve();  // the first step allocates (and zeroes) every array: seconds on big grids
-  // The multigrid's finest D_i = g g^T + beta_i I, in p's and q's arrays (free until the solve).
-  RedBlackArrays<6> D;
+  // The prior's weights beta_i for the multigrid (its coarse blocks), in p's first arrays (free
+  // until the solve).
+  RedBlackArrays<1> beta;
+  const bool lendBeta = multigrid && withPrior;
   auto borrow = [&] {
-    for (int c = 0; c < 2; ++c)
-      for (int a = 0; a < 3; ++a) D.c[c][a].swap(p_.c[c][a]), D.c[c][3 + a].swap(q_.c[c][a]);
+    for (int c = 0; c < 2; ++c) beta.c[c][0].swap(p_.c[c][0]);
   };
-  if (multigrid) borrow();
+  if (lendBeta) borrow();
   // g = grad of (f_k + f_k+1)/2 (central differences, one-sided on the box's faces), f_t =
   // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*), into r), shift = alpha n_i
   // + beta_i; x = V.
@@ -67,9 +68,8 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   {
     // A real row at a time: its nodes in Grid::Index order first (contiguous: vectorised),
     // then split by colour into the layout's arrays.
-    std::vector<float> G[3], B[3], X[3], S(nx), Dr[6];
+    std::vector<float> G[3], B[3], X[3], S(nx), W(nx);
     for (int a = 0; a < 3; ++a) G[a].resize(nx), B[a].resize(nx), X[a].resize(nx);
-    for (int e = 0; e < 6; ++e) Dr[e].resize(nx);
     const std::vector<double> none(withPrior ? 0 : nx, 0.0);  // beta without a prior
 #pragma omp for schedule(static)
     for (int k = 0; k < d.Z(); ++k)
@@ -92,9 +92,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
           G[0][i] = float(gx), G[1][i] = float(gy), G[2][i] = float(gz);
           B[0][i] = float(-gx * ft), B[1][i] = float(-gy * ft), B[2][i] = float(-gz * ft);
           X[0][i] = float(vr[i][0]), X[1][i] = float(vr[i][1]), X[2][i] = float(vr[i][2]);
-          S[i] = float(alpha_ * n + beta);
-          Dr[0][i] = float(gx * gx + beta), Dr[1][i] = float(gx * gy), Dr[2][i] = float(gx * gz);
-          Dr[3][i] = float(gy * gy + beta), Dr[4][i] = float(gy * gz), Dr[5][i] = float(gz * gz + beta);
+          S[i] = float(alpha_ * n + beta), W[i] = float(beta);
         };
         if (nx == 1) {
           node(0, 0, 0, whole, across);
@@ -122,16 +120,15 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
           }
           float *shift = shift_.c[c][0].data() + m0;
           for (int t = 0; t < run.count; ++t) shift[t] = S[i0 + 2 * t];
-          if (multigrid)
-            for (int e = 0; e < 6; ++e) {
-              float *De = D.c[c][e].data() + m0;
-              const float *De0 = Dr[e].data() + i0;
-              for (int t = 0; t < run.count; ++t) De[t] = De0[2 * t];
-            }
+          if (lendBeta) {
+            float *to = beta.c[c][0].data() + m0;
+            for (int t = 0; t < run.count; ++t) to[t] = W[i0 + 2 * t];
+          }
         }
       }
   }
-  if (multigrid) multigrid_->Update(g_, shift_, D), borrow();  // p and q get their arrays back
+  if (multigrid) multigrid_->Update(g_, shift_, lendBeta ? &beta : nullptr);
+  if (lendBeta) borrow();  // p gets its arrays back
   const double bNorm = std::sqrt(Dot(r_, r_));
   VelocitySolve s;
   if (bNorm == 0) {  // no motion: V = 0 solves (*) exactly

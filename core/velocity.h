@@ -94,8 +94,8 @@ class VelocitySolver {
   Vectors g_;
   RedBlackArrays<1> shift_;
   // Kept from step to step (same grid): the multigrid levels and the solvers' vectors (the
-  // preconditioned residual z shares q's: q = A p is dead once r is updated; the multigrid's
-  // finest D, restricted once a step, borrows p's and q's storage before the solve).
+  // preconditioned residual z shares q's: q = A p is dead once r is updated; the prior's
+  // weights, which the multigrid reads once a step, borrow p's storage before the solve).
   std::unique_ptr<BlockMultigrid> multigrid_;
   Vectors x_, r_, p_, q_;
   // V_k-2, the start of the last solve (during the assembly and the start: d = V_k-1 - V_k-2).
