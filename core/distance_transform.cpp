@@ -61,6 +61,7 @@ ScalarField Distance(const Mesh &mesh, const Grid &grid, Gradient *gradient, con
   const std::size_t count = grid.NodeCount();
   std::vector<double> d2(count, std::numeric_limits<double>::infinity());
   std::vector<int> nearest(count, -1);
+  if (interrupt.Stop()) return out;  // the arrays are touched as they are filled: seconds on big grids
   const vcg::Point3i &dims = grid.dims;
 
   // 1. Seed: each face, the nodes within one cell of its box. A face less than a cell tall
@@ -96,6 +97,7 @@ ScalarField Distance(const Mesh &mesh, const Grid &grid, Gradient *gradient, con
 #pragma omp parallel for schedule(dynamic, 1) num_threads(Threads())
     for (int s = phase; s < dims.Z(); s += 4)
       for (int t : bySlab[s]) seed(t);
+    if (interrupt.Stop()) return out;
   }
   for (int t : tall) seed(t);
 

@@ -114,7 +114,7 @@ void RestrictBlocks(const RedBlackLayout &fine, const RedBlackArrays<3> &g, cons
 }
 } // namespace
 
-BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
+BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha, const Interrupt &interrupt) {
   Level fine;
   fine.dims = grid.dims;
   fine.alpha = alpha;
@@ -142,6 +142,7 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
     l.ownX.Resize(l.layout), l.x = &l.ownX;
     l.ownB.Resize(l.layout), l.b = &l.ownB;
     for (std::vector<float> &g : l.gathered) g.resize(l.Count());
+    interrupt.Stop();
   }
 }
 

@@ -40,6 +40,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 #include "red_black.h"
 
 #include <vector>
@@ -51,9 +52,10 @@ namespace eulermap {
 // vectors of the conjugate gradients around the preconditioner (velocity.h).
 class BlockMultigrid {
  public:
-  // in:  the grid (its node counts set the levels), alpha. Allocates every coarse level once;
+  // in:  the grid (its node counts set the levels), alpha; interrupt, asked after each
+  //      level's allocation (its answer is left to the caller). Allocates every level once;
   //      the operator is set by Update, step after step.
-  BlockMultigrid(const Grid &grid, double alpha);
+  BlockMultigrid(const Grid &grid, double alpha, const Interrupt &interrupt = Interrupt());
 
   const vcg::Point3i &Dims() const { return levels_.front().dims; }
   // in:  the finest grid's system, in RedBlackLayout(Dims()) (ghosts 0): per node g_i and

@@ -36,15 +36,18 @@ double Dot(const RedBlackArrays<3> &a, const RedBlackArrays<3> &b) {
 VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
                                     const VectorField &prior, const ScalarField &priorWeight, const Interrupt &interrupt) {
   grid_ = fk.grid;
-  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
+  // The first step allocates (and zeroes: the pages are touched) every array: seconds on big
+  // grids, so the interrupt is asked after each.
+  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0)), interrupt.Stop();
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
-    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_);
+    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_), interrupt.Stop();
     shift_.Resize(layout_);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
-  if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims)) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
-  if (interrupt.Stop()) return VelocitySolve();  // the first step allocates (and zeroes) every array: seconds on big grids
+  if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims))
+    multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_, interrupt);
+  if (interrupt.Stop()) return VelocitySolve();
   // The prior's weights beta_i for the multigrid (its coarse blocks), in p's first arrays (free
   // until the solve).
   RedBlackArrays<1> beta;
