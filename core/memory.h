@@ -12,8 +12,8 @@ namespace eulermap {
 // single-precision vectors (g, shift, x, r, p, q, V_k-2: 76, ghosts around the grid
 // included) and its multigrid levels (the coarse ones: about 15); with anchors, their
 // motion and weights (24 + 8). Measured peak over nodes without anchors (eulermap_bench
-// grid 256: 2752 MiB peak RSS for 256^3 nodes, the meshes included) is 172 B; the anchors'
-// 32 B lie within RunBytes' margin.
+// grid 256: 2752 MiB peak RSS for 256^3 nodes, the meshes included) is 172 B (grid 384:
+// 9123 MiB, 169 B); the anchors' 32 B lie within RunBytes' margin.
 constexpr std::size_t kBytesPerGridNode = 180;
 // Bytes per tracked point (position, level, trajectory state, surgery's records).
 constexpr std::size_t kBytesPerPoint = 400;
