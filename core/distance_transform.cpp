@@ -1,5 +1,7 @@
 #include "distance_transform.h"
 
+#include <type_traits>
+
 #include "threads.h"
 
 #include <algorithm>
@@ -47,18 +49,19 @@ Point3 Offset(const Triangle &t, const Point3 &p) {
 
 double SquaredDistance(const Triangle &t, const Point3 &p) { return Offset(t, p).SquaredNorm(); }
 
-} // namespace
-
-ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient, const Interrupt &interrupt) {
+template <class Gradient>
+ScalarField Distance(const Mesh &mesh, const Grid &grid, Gradient *gradient, const Interrupt &interrupt) {
+  using Vector = typename std::decay_t<decltype(gradient->values)>::value_type;
   std::vector<Triangle> tris;
   for (const Face &f : mesh.face)
     if (!f.IsD()) tris.push_back({f.cP(0), f.cP(1), f.cP(2)});
   ScalarField out(grid, 0.0);
-  if (gradient) *gradient = VectorField(grid, Point3(0, 0, 0));
+  if (gradient) *gradient = Gradient(grid, Vector(0, 0, 0));
   if (tris.empty()) return out;
   const std::size_t count = grid.NodeCount();
   std::vector<double> d2(count, std::numeric_limits<double>::infinity());
   std::vector<int> nearest(count, -1);
+  if (interrupt.Stop()) return out;  // the arrays are touched as they are filled: seconds on big grids
   const vcg::Point3i &dims = grid.dims;
 
   // 1. Seed: each face, the nodes within one cell of its box. A face less than a cell tall
@@ -94,6 +97,7 @@ ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gr
 #pragma omp parallel for schedule(dynamic, 1) num_threads(Threads())
     for (int s = phase; s < dims.Z(); s += 4)
       for (int t : bySlab[s]) seed(t);
+    if (interrupt.Stop()) return out;
   }
   for (int t : tall) seed(t);
 
@@ -133,10 +137,21 @@ ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gr
       const Triangle &t = tris[nearest[n]];
       const Point3 away = Offset(t, grid.Node(i, j, k));
       const double d = away.Norm();
-      gradient->values[n] = d > 0 ? away / d : ((t.b - t.a) ^ (t.c - t.a)).Normalize();  // on the face: its normal
+      const Point3 unit = d > 0 ? away / d : ((t.b - t.a) ^ (t.c - t.a)).Normalize();  // on the face: its normal
+      gradient->values[n] = Vector(unit[0], unit[1], unit[2]);
     }
   }
   return out;
+}
+
+} // namespace
+
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient, const Interrupt &interrupt) {
+  return Distance(mesh, grid, gradient, interrupt);
+}
+
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, GradientField *gradient, const Interrupt &interrupt) {
+  return Distance(mesh, grid, gradient, interrupt);
 }
 
 } // namespace eulermap

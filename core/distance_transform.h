@@ -29,9 +29,12 @@ namespace eulermap {
 // out: per node, the distance to the nearest point of the mesh; gradient (when given): per
 //      node, the gradient of that distance, the unit vector from the nearest point (of the
 //      face found) to the node; on the surface, that face's unit normal (the mesh's
-//      orientation). The sweeps ask the interrupt every kNodesBetweenPolls nodes (interrupt.h)
+//      orientation). The sweeps ask the interrupt every kNodesBetweenPolls nodes (interrupt.h),
+//      the seeding after the allocation and after each of its four phases,
 //      and return what they have when it stops them.
 ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr,
                              const Interrupt &interrupt = Interrupt());
+// The same with the gradient in single precision.
+ScalarField UnsignedDistance(const Mesh &mesh, const Grid &grid, GradientField *gradient, const Interrupt &interrupt = Interrupt());
 
 } // namespace eulermap

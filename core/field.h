@@ -69,5 +69,8 @@ struct ScalarField : Field<double> {
 };
 
 using VectorField = Field<Point3>;
+// Unit gradients of a distance (distance_transform.h), read by HermiteField: single precision
+// (1e-7 of a unit vector) halves their memory on big grids.
+using GradientField = Field<vcg::Point3f>;
 
 } // namespace eulermap

@@ -4,7 +4,8 @@
 
 namespace eulermap {
 
-HermiteField::HermiteField(const ScalarField &f, const VectorField &gradient) : f_(f), gradient_(gradient) {}
+HermiteField::HermiteField(const ScalarField &f, const VectorField &gradient) : f_(f), gradient_(&gradient) {}
+HermiteField::HermiteField(const ScalarField &f, const GradientField &gradient) : f_(f), gradientFloat_(&gradient) {}
 
 void HermiteField::Mixed(int i, int j, int k, double out[4]) const {
   const Grid &grid = f_.grid;
@@ -22,7 +23,7 @@ void HermiteField::Mixed(int i, int j, int k, double out[4]) const {
       int n[3] = {c[0], c[1], c[2]};
       n[a] = x[a];
       if (b >= 0) n[b] = y[b];
-      return gradient_(n[0], n[1], n[2])[comp];
+      return NodeGradient(n[0], n[1], n[2])[comp];
     };
     double span = (hi[a] - lo[a]) * grid.h;
     if (b < 0) return (at(hi, hi) - at(lo, lo)) / span;
@@ -60,7 +61,7 @@ double HermiteField::Value(const Point3 &p, Point3 *gradient) const {
     // f_z, f_xz, f_yz, f_xyz.
     double mixed[4];
     Mixed(i, j, k, mixed);
-    const Point3 &first = gradient_(i, j, k);
+    const Point3 first = NodeGradient(i, j, k);
     const double d[8] = {f_(i, j, k), first.X(), first.Y(), mixed[0], first.Z(), mixed[1], mixed[2], mixed[3]};
     for (int m = 0; m < 8; ++m) {
       const double bx = basis[0][end[0]][m & 1], by = basis[1][end[1]][m >> 1 & 1], bz = basis[2][end[2]][m >> 2 & 1];

@@ -37,6 +37,7 @@ class HermiteField {
   // f and its node gradients (SignedDistance's), on the same grid; not copied: they must
   // outlive this object.
   HermiteField(const ScalarField &f, const VectorField &gradient);
+  HermiteField(const ScalarField &f, const GradientField &gradient);  // single precision
 
   // f(p) from the Hermite polynomial of p's cell, and its gradient there when `gradient` is
   // given (one evaluation for both); outside the grid's box both are extended as
@@ -48,8 +49,16 @@ class HermiteField {
   // Mixed derivatives f_xy, f_xz, f_yz, f_xyz at node (i, j, k).
   void Mixed(int i, int j, int k, double out[4]) const;
 
+  // The node gradient at (i, j, k), from whichever field was given.
+  Point3 NodeGradient(int i, int j, int k) const {
+    if (gradient_) return (*gradient_)(i, j, k);
+    const vcg::Point3f &g = (*gradientFloat_)(i, j, k);
+    return Point3(g[0], g[1], g[2]);
+  }
+
   const ScalarField &f_;
-  const VectorField &gradient_;
+  const VectorField *gradient_ = nullptr;
+  const GradientField *gradientFloat_ = nullptr;
 };
 
 } // namespace eulermap

@@ -4,8 +4,10 @@
 //
 // The pieces: a conjugate-gradient iteration of the velocity solve with its multigrid
 // V-cycle (velocity.h), and kNodesBetweenPolls nodes of a distance-transform sweep
-// (distance_transform.h); also where a velocity system is assembled and where an inside set
-// is known. The pipeline reports its stages between them (pipeline.h).
+// (distance_transform.h), of each pass that finds an inside set (sdf.h), of a warped morph
+// frame (morph.h) and of a velocity system's assembly; also once a solver's arrays are
+// allocated and once a system is assembled. The pipeline reports its stages between them
+// (pipeline.h).
 //
 // Stop() never throws, so it may be asked inside a parallel region: on the thread that
 // made the Interrupt (the host's, whose callback may touch its GUI) it asks the callback;

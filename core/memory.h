@@ -7,11 +7,14 @@
 
 namespace eulermap {
 
-// Peak bytes per grid node of a whole run: the fields f0, f1, the frames f(., t_k) and
-// f(., t_k+1), V_k, the anchors' motion, the solver's single-precision vectors and its
-// multigrid levels, the gradients of the last pull-back. Measured peak over nodes
-// (eulermap_bench grid 256: 4208 MiB for 256^3 nodes, the meshes included) is 263 B.
-constexpr std::size_t kBytesPerGridNode = 270;
+// Peak bytes per grid node of a whole run: the fields f0, f1 (8 + 8), the frames f(., t_k)
+// and f(., t_k+1) (8 + 8), V_k (24), the gradients of the last pull-back (12), the solver's
+// single-precision vectors (g, shift, x, r, p, q, V_k-2: 76, ghosts around the grid
+// included) and its multigrid levels (the coarse ones: about 15); with anchors, their
+// motion and weights (24 + 8). Measured peak over nodes without anchors (eulermap_bench
+// grid 256: 2752 MiB peak RSS for 256^3 nodes, the meshes included) is 172 B (grid 384:
+// 9123 MiB, 169 B); the anchors' 32 B lie within RunBytes' margin.
+constexpr std::size_t kBytesPerGridNode = 180;
 // Bytes per tracked point (position, level, trajectory state, surgery's records).
 constexpr std::size_t kBytesPerPoint = 400;
 

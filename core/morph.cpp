@@ -526,7 +526,7 @@ std::string Morph::Describe() const {
 //   t:    time, normally in [0,1]; t = 0 gives f0 and t = 1 gives f1 exactly
 //   out:  resized to the grid and overwritten
 // The two thin-plate systems are solved once, then nodes are evaluated in parallel.
-void Morph::Frame(double t, ScalarField &out) const {
+void Morph::Frame(double t, ScalarField &out, const Interrupt &interrupt) const {
   const ScalarField &f0 = *impl_->f0, &f1 = *impl_->f1;
   const Grid &g = f0.grid;
   out.grid = g;
@@ -551,12 +551,14 @@ void Morph::Frame(double t, ScalarField &out) const {
   const bool want[2] = {use0 && !w.identity[0], use1 && !w.identity[1]};
   const int nx = g.dims.X();
   const long long rows = (long long)g.dims.Y() * g.dims.Z();
+  const long long rowsBetweenPolls = std::max(1LL, (long long)kNodesBetweenPolls / nx);
 #pragma omp parallel num_threads(Threads())
   {
     std::vector<Point3> p0(nx), p1(nx);
     std::vector<double> scratch;
 #pragma omp for schedule(static)
     for (long long r = 0; r < rows; ++r) {
+      if (r % rowsBetweenPolls == 0 ? interrupt.Stop() : interrupt.Cancelled()) continue;
       const int j = int(r % g.dims.Y()), k = int(r / g.dims.Y());
       w.EvaluateRow(g.Node(0, j, k), g.h, nx, want, p0.data(), p1.data(), scratch);
       for (int i = 0; i < nx; ++i) {
@@ -603,7 +605,8 @@ Point3 Morph::WarpToTarget(double t, const Point3 &p) const {
 // Anchor motion between t0 and t1: the thin-plate warp taking q_i(t0) to q_i(t1),
 // as a velocity (W(p) - p) / (t1 - t0) at every grid node, with each node's closeness
 // to the anchors. Empty (no nodes) in linear-blend mode, where anchors do not move space.
-void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, ScalarField &closeness) const {
+void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, ScalarField &closeness,
+                         const Interrupt &interrupt) const {
   if (impl_->mode != Mode::ArapTps) {
     out = VectorField();
     closeness = ScalarField();
@@ -618,12 +621,14 @@ void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, 
   const int nx = g.dims.X();
   const long long rows = (long long)g.dims.Y() * g.dims.Z();
   const bool want[2] = {true, false};  // W: q(t0) -> q(t1)
+  const long long rowsBetweenPolls = std::max(1LL, (long long)kNodesBetweenPolls / nx);
 #pragma omp parallel num_threads(Threads())
   {
     std::vector<Point3> moved(nx);
     std::vector<double> scratch, x(nx), nearest2(nx);
 #pragma omp for schedule(static)
     for (long long r = 0; r < rows; ++r) {
+      if (r % rowsBetweenPolls == 0 ? interrupt.Stop() : interrupt.Cancelled()) continue;
       const int j = int(r % g.dims.Y()), k = int(r / g.dims.Y());
       const Point3 start = g.Node(0, j, k);
       w->EvaluateRow(start, g.h, nx, want, moved.data(), nullptr, scratch);

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 
 #include <memory>
 #include <string>
@@ -38,16 +39,19 @@ class Morph {
   Mode mode() const;
   std::string Describe() const;  // e.g. "ARAP+TPS, 6 anchors (15 tetrahedra)"
 
-  // f(., t) at every grid node (Eq. 1), into `out` (resized to the grid).
-  void Frame(double t, ScalarField &out) const;
+  // f(., t) at every grid node (Eq. 1), into `out` (resized to the grid). interrupt: asked
+  // every kNodesBetweenPolls nodes of a warped frame (interrupt.h); once it says stop, `out`
+  // means nothing.
+  void Frame(double t, ScalarField &out, const Interrupt &interrupt = Interrupt()) const;
 
   std::vector<Point3> Anchors(double t) const;        // q_i(t); q_i(0) = a_i, q_i(1) = b_i
   // Velocity of space that the anchors impose between t0 and t1: the thin-plate warp
   // q_i(t0) -> q_i(t1) minus the identity, over (t1 - t0), at every grid node, and
   // each node's closeness exp(-(d / radius)^2) to the nearest anchor q_i(t0) (d and
   // radius in world units); empty fields in linear-blend mode. The velocity solve's
-  // prior (velocity.h).
-  void AnchorMotion(double t0, double t1, double radius, VectorField &velocity, ScalarField &closeness) const;
+  // prior (velocity.h). interrupt: as Frame's.
+  void AnchorMotion(double t0, double t1, double radius, VectorField &velocity, ScalarField &closeness,
+                    const Interrupt &interrupt = Interrupt()) const;
   Point3 WarpToSource(double t, const Point3 &p) const;  // W_t->0
   Point3 WarpToTarget(double t, const Point3 &p) const;  // W_t->1
 

@@ -1,15 +1,16 @@
 #include "multigrid.h"
 
-#include "block_sum.h"
 #include "threads.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace eulermap {
 
 namespace {
 constexpr std::size_t kCoarsestNodes = 1000;
 constexpr int kCoarsestSweeps = 20;
+constexpr int kCoarseSweeps = 1;  // red-black sweep pairs each way on the levels between (the finest: 1)
 
 // Full weighting (R = P^T / 8) of the values from, on the fine layout, onto the coarse one:
 // coarse node (I, J, K) takes w(di) w(dj) w(dk) / 8 of fine node (2I + di, 2J + dj, 2K + dk),
@@ -58,9 +59,62 @@ void FullWeighting(const RedBlackLayout &fine, const RedBlackArrays<N> &from, co
       }
   }
 }
+
+// D_i = g_i g_i^T + beta_i I (beta null: 0) at every fine node, full weighting onto the coarse
+// layout (as FullWeighting<false, 6> of D, without storing the fine D): tap by tap, the six
+// products accumulated along the coarse row.
+void RestrictBlocks(const RedBlackLayout &fine, const RedBlackArrays<3> &g, const RedBlackArrays<1> *beta,
+                    const RedBlackLayout &coarse, RedBlackArrays<6> &to) {
+  int colour[27], taps = 0;
+  long offset[27];
+  float weight[27];
+  for (int dk = -1; dk <= 1; ++dk)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        colour[taps] = (di + dj + dk) & 1;
+        offset[taps] = (di == 1) + dj * fine.RowStride() + dk * fine.PlaneStride();
+        weight[taps++] = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
+      }
+  const int nc = coarse.dims[0];
+#pragma omp parallel if (fine.Nodes() >= kParallelNodes) num_threads(Threads())
+  {
+    std::vector<float> rows[6];
+    for (std::vector<float> &r : rows) r.resize(nc);
+#pragma omp for schedule(static)
+    for (int K = 0; K < coarse.dims[2]; ++K)
+      for (int J = 0; J < coarse.dims[1]; ++J) {
+        const std::size_t centre = fine.Position(0, 2 * J, 2 * K), first = coarse.Position(0, J, K);
+        float *r0 = rows[0].data(), *r1 = rows[1].data(), *r2 = rows[2].data(), *r3 = rows[3].data(), *r4 = rows[4].data(),
+              *r5 = rows[5].data();
+        for (std::vector<float> &r : rows) std::fill(r.begin(), r.end(), 0.0f);
+        for (int t = 0; t < taps; ++t) {
+          const std::size_t at = centre + offset[t];
+          const float *x = g.c[colour[t]][0].data() + at, *y = g.c[colour[t]][1].data() + at, *z = g.c[colour[t]][2].data() + at;
+          const float w = weight[t];
+#pragma omp simd
+          for (int I = 0; I < nc; ++I) {
+            const float a = x[I], b = y[I], c = z[I];
+            r0[I] += w * (a * a), r1[I] += w * (a * b), r2[I] += w * (a * c);
+            r3[I] += w * (b * b), r4[I] += w * (b * c), r5[I] += w * (c * c);
+          }
+          if (beta) {
+            const float *s = beta->c[colour[t]][0].data() + at;
+#pragma omp simd
+            for (int I = 0; I < nc; ++I) r0[I] += w * s[I], r3[I] += w * s[I], r5[I] += w * s[I];
+          }
+        }
+        // Coarse node (I, J, K): colour I + J + K (mod 2), position that of I = 0 plus (I + 1) / 2.
+        for (int e = 0; e < 6; ++e) {
+          float *even = to.c[(J + K) & 1][e].data() + first, *odd = to.c[(J + K + 1) & 1][e].data() + first;
+          for (int I = 0; I < nc; I += 2) even[I / 2] = rows[e][I];
+          for (int I = 1; I < nc; I += 2) odd[(I + 1) / 2] = rows[e][I];
+        }
+      }
+  }
+}
 } // namespace
 
-BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
+BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha, const Interrupt &interrupt) {
   Level fine;
   fine.dims = grid.dims;
   fine.alpha = alpha;
@@ -74,7 +128,10 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
     levels_.push_back(std::move(c));
   }
   for (Level &l : levels_) {
+    const bool finest = &l == &levels_.front();
     l.layout = RedBlackLayout(l.dims);
+    l.r.Resize(l.layout, 1);
+    if (finest) continue;  // its blocks, x and b come from the solver (Update, Precondition)
     l.data.Resize(l.layout);
     l.shift.Resize(l.layout);
     ForEachRun(l.layout, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
@@ -82,18 +139,22 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha) {
     });
     l.inverse.Resize(l.layout);
     l.diagonal.Resize(l.layout, 1);
-    l.x.Resize(l.layout);
-    if (&l != &levels_.front()) l.ownB.Resize(l.layout), l.b = &l.ownB;
-    l.r.Resize(l.layout, 1);
-    if (&l != &levels_.front())
-      for (std::vector<float> &g : l.gathered) g.resize(l.Count());
+    l.ownX.Resize(l.layout), l.x = &l.ownX;
+    l.ownB.Resize(l.layout), l.b = &l.ownB;
+    for (std::vector<float> &g : l.gathered) g.resize(l.Count());
+    interrupt.Stop();
   }
 }
 
-void BlockMultigrid::Update() {
+void BlockMultigrid::Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<1> *beta) {
+  g_ = &g, shift_ = &shift;
   for (std::size_t n = 1; n < levels_.size(); ++n)  // coarse D = R D (lumped)
-    FullWeighting<false>(levels_[n - 1].layout, levels_[n - 1].data, levels_[n].layout, levels_[n].data);
-  for (Level &l : levels_)
+    if (n == 1)
+      RestrictBlocks(levels_[0].layout, g, beta, levels_[1].layout, levels_[1].data);
+    else
+      FullWeighting<false>(levels_[n - 1].layout, levels_[n - 1].data, levels_[n].layout, levels_[n].data);
+  for (std::size_t n = 1; n < levels_.size(); ++n) {
+    Level &l = levels_[n];
     ForEachRun(l.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t) {
       const float *d[6], *shift = l.shift.c[c][0].data() + run.first;
       float *inv[6], *diag[6];
@@ -114,6 +175,7 @@ void BlockMultigrid::Update() {
 #pragma omp simd
           for (long m = 0; m < run.count; ++m) diag[e][m] = d[e][m] + (e == 0 || e == 3 || e == 5 ? shift[m] : 0.0f);
     });
+  }
 }
 
 void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
@@ -121,7 +183,7 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
   const vcg::Point3i &cd = coarse.dims;
   ForEachRun(coarse.layout, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
     for (int a = 0; a < 3; ++a) {
-      const float *x = coarse.x.c[c][a].data() + run.first;
+      const float *x = coarse.x->c[c][a].data() + run.first;
       float *to = coarse.gathered[a].data() + row + run.firstI;
       for (int n = 0; n < run.count; ++n) to[2 * n] = x[n];
     }
@@ -143,7 +205,7 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
           const float *r00 = g + nc * (J0 + cd[1] * K0), *r10 = g + nc * (J1 + cd[1] * K0), *r01 = g + nc * (J0 + cd[1] * K1),
                       *r11 = g + nc * (J1 + cd[1] * K1);
           for (int I = 0; I < nc; ++I) sum[I] = (r00[I] + r10[I]) + (r01[I] + r11[I]);
-          float *x = fine.x.c[0][a].data() + run.first;
+          float *x = fine.x->c[0][a].data() + run.first;
           if (run.firstI == 0)
             for (int n = 0; n < run.count; ++n) x[n] += 0.25f * sum[n];
           else
@@ -153,15 +215,46 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
   }
 }
 
-void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
+void BlockMultigrid::Sweep(Level &l, int c, bool fromZero, std::vector<double> *plane) {
   const long hy = l.layout.RowStride(), hz = l.layout.PlaneStride();
   const float alpha = float(l.alpha);
-  ForEachRun(l.layout, c, c, [&](int, int, int, const RedBlackLayout::Run &run, std::size_t) {
+  const bool finest = &l == &levels_.front();
+  ForEachRun(l.layout, c, c, [&](int, int k, int, const RedBlackLayout::Run &run, std::size_t) {
     const long w = run.west;
-    const float *b[3], *o[3], *inv[6];
+    const float *b[3], *o[3];
     float *x[3];
     for (int a = 0; a < 3; ++a)
-      b[a] = l.b->c[c][a].data() + run.first, o[a] = l.x.c[1 - c][a].data() + run.first, x[a] = l.x.c[c][a].data() + run.first;
+      b[a] = l.b->c[c][a].data() + run.first, o[a] = l.x->c[1 - c][a].data() + run.first, x[a] = l.x->c[c][a].data() + run.first;
+    auto addDot = [&] {  // a second pass while the run is in cache (as velocity.cpp's Apply)
+      if (!plane) return;
+      double dot = 0;
+#pragma omp simd reduction(+ : dot)
+      for (long m = 0; m < run.count; ++m) dot += double(b[0][m]) * x[0][m] + double(b[1][m]) * x[1][m] + double(b[2][m]) * x[2][m];
+      (*plane)[k] += dot;
+    };
+    if (finest) {
+      // (g g^T + s I)^-1 t = (t - g (g . t) / (s + |g|^2)) / s (Sherman-Morrison), s = alpha n_i + beta_i.
+      const float *g[3], *shift = shift_->c[c][0].data() + run.first;
+      for (int a = 0; a < 3; ++a) g[a] = g_->c[c][a].data() + run.first;
+      auto solve = [&](long m, float t0, float t1, float t2) {
+        const float gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+        const float k = (g[0][m] * t0 + g[1][m] * t1 + g[2][m] * t2) / (shift[m] + gg), inv = 1.0f / shift[m];
+        x[0][m] = (t0 - g[0][m] * k) * inv;
+        x[1][m] = (t1 - g[1][m] * k) * inv;
+        x[2][m] = (t2 - g[2][m] * k) * inv;
+      };
+      if (fromZero) {
+#pragma omp simd
+        for (long m = 0; m < run.count; ++m) solve(m, b[0][m], b[1][m], b[2][m]);
+      } else {
+#pragma omp simd
+        for (long m = 0; m < run.count; ++m)
+          solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
+                b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
+      }
+      return addDot();
+    }
+    const float *inv[6];
     for (int e = 0; e < 6; ++e) inv[e] = l.inverse.c[c][e].data() + run.first;
     auto solve = [&](long m, float s0, float s1, float s2) {
       x[0][m] = inv[0][m] * s0 + inv[1][m] * s1 + inv[2][m] * s2;
@@ -177,19 +270,34 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero) {
         solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
               b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
     }
+    addDot();
   });
 }
 
 void BlockMultigrid::Residual(Level &l) {
   const long hy = l.layout.RowStride(), hz = l.layout.PlaneStride();
   const float alpha = float(l.alpha);
+  const bool finest = &l == &levels_.front();
   ForEachRun(l.layout, 0, 0, [&](int, int, int, const RedBlackLayout::Run &run, std::size_t) {
     const long w = run.west;
-    const float *b[3], *o[3], *x[3], *d[6];
+    const float *b[3], *o[3], *x[3];
     float *r[3];
     for (int a = 0; a < 3; ++a)
-      b[a] = l.b->c[0][a].data() + run.first, o[a] = l.x.c[1][a].data() + run.first, x[a] = l.x.c[0][a].data() + run.first,
+      b[a] = l.b->c[0][a].data() + run.first, o[a] = l.x->c[1][a].data() + run.first, x[a] = l.x->c[0][a].data() + run.first,
       r[a] = l.r.c[0][a].data() + run.first;
+    if (finest) {  // the block times x: g (g . x) + s x
+      const float *g[3], *shift = shift_->c[0][0].data() + run.first;
+      for (int a = 0; a < 3; ++a) g[a] = g_->c[0][a].data() + run.first;
+#pragma omp simd
+      for (long m = 0; m < run.count; ++m) {
+        const float x0 = x[0][m], x1 = x[1][m], x2 = x[2][m], gx = g[0][m] * x0 + g[1][m] * x1 + g[2][m] * x2;
+        r[0][m] = b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz) - (g[0][m] * gx + shift[m] * x0);
+        r[1][m] = b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz) - (g[1][m] * gx + shift[m] * x1);
+        r[2][m] = b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz) - (g[2][m] * gx + shift[m] * x2);
+      }
+      return;
+    }
+    const float *d[6];
     for (int e = 0; e < 6; ++e) d[e] = l.diagonal.c[0][e].data() + run.first;
 #pragma omp simd
     for (long m = 0; m < run.count; ++m) {
@@ -201,41 +309,35 @@ void BlockMultigrid::Residual(Level &l) {
   });
 }
 
-void BlockMultigrid::Cycle(std::size_t n) {
+void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane) {
   Level &l = levels_[n];
   if (n + 1 == levels_.size()) {  // coarsest
     for (int s = 0; s < kCoarsestSweeps; ++s) Sweep(l, 0, s == 0), Sweep(l, 1, false);
-    for (int s = 0; s < kCoarsestSweeps; ++s) Sweep(l, 1, false), Sweep(l, 0, false);
+    for (int s = 0; s < kCoarsestSweeps; ++s) {
+      const bool last = s + 1 == kCoarsestSweeps;
+      Sweep(l, 1, false, last ? plane : nullptr), Sweep(l, 0, false, last ? plane : nullptr);
+    }
     return;
   }
-  Sweep(l, 0, true), Sweep(l, 1, false);
+  const int sweeps = n == 0 ? 1 : kCoarseSweeps;
+  for (int s = 0; s < sweeps; ++s) Sweep(l, 0, s == 0), Sweep(l, 1, false);
   Residual(l);
   Level &c = levels_[n + 1];
   FullWeighting<true>(l.layout, l.r, c.layout, c.ownB);  // the residual is 0 at black nodes
   Cycle(n + 1);
   ProlongAdd(c, l);
-  Sweep(l, 1, false), Sweep(l, 0, false);
+  for (int s = 0; s < sweeps; ++s) {
+    const bool last = s + 1 == sweeps;  // each colour's last sweep
+    Sweep(l, 1, false, last ? plane : nullptr), Sweep(l, 0, false, last ? plane : nullptr);
+  }
 }
 
 double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {
   Level &fine = levels_.front();
-  const long n = long(fine.layout.Positions());
-  fine.b = &r;  // read in place
-  Cycle(0);
-  return BlockSum(n, [&](long begin, long end) {  // z = x, then r . z
-    double s = 0;
-    for (int c = 0; c < 2; ++c)
-      for (int a = 0; a < 3; ++a) {
-        const float *from = fine.x.c[c][a].data(), *v = r.c[c][a].data();
-        float *to = z.c[c][a].data();
-#pragma omp simd reduction(+ : s)
-        for (long m = begin; m < end; ++m) {
-          to[m] = from[m];
-          s += double(v[m]) * to[m];
-        }
-      }
-    return s;
-  });
+  fine.b = &r, fine.x = &z;  // read and written in place
+  std::vector<double> plane(fine.dims[2], 0.0);  // r . z by plane, summed in order (as velocity.cpp's Apply)
+  Cycle(0, &plane);
+  return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 
 } // namespace eulermap

@@ -31,11 +31,16 @@
 // after the black sweep the residual vanishes at black nodes, so it is computed at red nodes
 // only and the full weighting reads 13 of its 27 fine nodes (the coarse nodes are red, the
 // other 14 black); the post-smoother's black sweep overwrites black nodes without reading
-// them, so the correction is prolonged onto red nodes only. Levels store their values
+// them, so the correction is prolonged onto red nodes only. The finest level stores no
+// blocks: its block g g^T + (alpha n_i + beta_i) I is inverted by the Sherman-Morrison
+// formula from the solver's g and shift (16 bytes a node read, against 24 for a stored
+// inverse; no D, inverse or diagonal kept at 60 bytes a node), its iterate is the solver's z
+// and its right-hand side the solver's r. Levels store their values
 // split by colour (red_black.h), so that sweeps run vectorised over contiguous rows.
 #pragma once
 
 #include "field.h"
+#include "interrupt.h"
 #include "red_black.h"
 
 #include <vector>
@@ -47,20 +52,25 @@ namespace eulermap {
 // vectors of the conjugate gradients around the preconditioner (velocity.h).
 class BlockMultigrid {
  public:
-  // in:  the grid (its node counts set the levels), alpha. Allocates every level once;
+  // in:  the grid (its node counts set the levels), alpha; interrupt, asked after each
+  //      level's allocation (its answer is left to the caller). Allocates every level once;
   //      the operator is set by Update, step after step.
-  BlockMultigrid(const Grid &grid, double alpha);
+  BlockMultigrid(const Grid &grid, double alpha, const Interrupt &interrupt = Interrupt());
 
   const vcg::Point3i &Dims() const { return levels_.front().dims; }
-  // D_i per node of the finest grid, in RedBlackLayout(Dims()) (write real nodes only): fill
-  // it, then call Update.
-  RedBlackArrays<6> &Data() { return levels_.front().data; }
-  // out: the coarse levels' D and every level's block inverses, from Data()
-  void Update();
+  // in:  the finest grid's system, in RedBlackLayout(Dims()) (ghosts 0): per node g_i and
+  //      shift_i = alpha n_i + beta_i, its block being g g^T + shift I (read by every V-cycle
+  //      until the next Update, not copied: they must stay alive and unchanged till then), and
+  //      beta_i (null: 0; read here only: it may be borrowed storage)
+  // out: the coarse levels' D (the first one's restricted from D_i = g g^T + beta_i I, formed
+  //      tap by tap) and their block inverses. The finest level stores no blocks: its sweeps
+  //      invert g g^T + shift I by the Sherman-Morrison formula, from g and shift.
+  void Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<1> *beta = nullptr);
 
   // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
-  // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0); returns r . z
-  //      (block_sum.h: the same bits for any number of threads)
+  // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0: never written;
+  //      z is the finest level's iterate, so it must not be r); returns r . z
+  //      (summed by plane, in order: the same bits for any number of threads)
   double Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z);
 
   int Levels() const { return int(levels_.size()); }
@@ -70,25 +80,33 @@ class BlockMultigrid {
     vcg::Point3i dims;
     double alpha = 0;
     RedBlackLayout layout;         // of the arrays below
+    // Coarse levels only (the finest one's blocks come from g and shift, Update):
     RedBlackArrays<6> data;        // D_i
     RedBlackArrays<1> shift;       // alpha n_i
     RedBlackArrays<6> inverse;     // (D_i + alpha n_i I)^-1, (xx, xy, xz, yy, yz, zz)
     RedBlackArrays<6> diagonal;    // D_i + alpha n_i I (red nodes only: the residual's)
-    RedBlackArrays<3> x, r;        // r: red nodes only
-    RedBlackArrays<3> ownB;        // the right-hand side of a coarse level (restricted residual)
-    const RedBlackArrays<3> *b = nullptr;  // the right-hand side: ownB, or the finest level's r (Precondition)
+    RedBlackArrays<3> ownX, ownB;  // the iterate and the right-hand side (the restricted residual)
+    // Every level:
+    RedBlackArrays<3> r;           // the residual, red nodes only
+    RedBlackArrays<3> *x = nullptr;        // ownX, or the finest level's z (Precondition)
+    const RedBlackArrays<3> *b = nullptr;  // ownB, or the finest level's r (Precondition)
     std::vector<float> gathered[3];  // x in Grid::Index order (coarse levels: the prolongation's)
     std::size_t Count() const { return std::size_t(dims[0]) * dims[1] * dims[2]; }
   };
 
   // x = (D + alpha n I)^-1 (b + alpha sum_j x_j) at the nodes of colour c (fromZero: every
-  // x_j taken as 0, for the first sweep of a cycle).
-  void Sweep(Level &l, int c, bool fromZero);
+  // x_j taken as 0, for the first sweep of a cycle); plane (when given): b . x over the swept
+  // nodes added by plane (each plane's runs in order, by one thread).
+  void Sweep(Level &l, int c, bool fromZero, std::vector<double> *plane = nullptr);
   void Residual(Level &l);                            // l.r = l.b - A l.x at red nodes
   void ProlongAdd(Level &coarse, Level &fine);  // fine.x += P coarse.x at red nodes
-  void Cycle(std::size_t level);
+  // plane (when given): b . x of the level's last sweeps, by plane.
+  void Cycle(std::size_t level, std::vector<double> *plane = nullptr);
 
   std::vector<Level> levels_;
+  // The finest level's system (Update).
+  const RedBlackArrays<3> *g_ = nullptr;
+  const RedBlackArrays<1> *shift_ = nullptr;
 };
 
 } // namespace eulermap

@@ -226,7 +226,7 @@ Grid ChooseGrid(const Meshes &m, const Options &options, std::size_t samples) {
 // the last pull-back, f0's only for the samples' levels.
 struct Fields {
   ScalarField f0, f1;
-  VectorField gradient0, gradient1;
+  GradientField gradient0, gradient1;  // single precision: 12 bytes a node each
 };
 
 Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels, const Interrupt &interrupt) {
@@ -271,7 +271,8 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
             Surgery &surgery, Report &rep, const Stage &stage, const Interrupt &interrupt) {
   auto t0 = Clock::now();
   ScalarField fCur, fNext;
-  morph.Frame(0, fCur);
+  morph.Frame(0, fCur, interrupt);
+  if (interrupt.Cancelled()) throw Error("cancelled");
   rep.times.interp += Seconds(t0);
   VelocitySolver solver(options.alpha, options.solver, options.tolerance, options.maxIterations);
   VectorField V, anchorMotion;
@@ -280,9 +281,11 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
   for (int k = 0; k < options.steps; ++k) {
     stage(0.15 + 0.75 * k / options.steps, "step " + std::to_string(k + 1) + " of " + std::to_string(options.steps));
     t0 = Clock::now();
-    morph.Frame((k + 1) * dt, fNext);  // INT: f(., t_k+1), Eq. 1
+    morph.Frame((k + 1) * dt, fNext, interrupt);  // INT: f(., t_k+1), Eq. 1
+    if (interrupt.Cancelled()) throw Error("cancelled");
     if (options.anchorWeight > 0) {  // the prior of velocity.h: beta_i = anchorWeight * closeness
-      morph.AnchorMotion(k * dt, (k + 1) * dt, options.anchorRadius * grid.h, anchorMotion, anchorWeight);
+      morph.AnchorMotion(k * dt, (k + 1) * dt, options.anchorRadius * grid.h, anchorMotion, anchorWeight, interrupt);
+      if (interrupt.Cancelled()) throw Error("cancelled");
       for (double &w : anchorWeight.values) w *= options.anchorWeight;
     }
     rep.times.interp += Seconds(t0);
@@ -391,6 +394,7 @@ MorphEvents FindEvents(const Morph &morph, const Meshes &m, const Grid &grid, co
                        const Stage &stage) {
   const auto t0 = Clock::now();
   MorphEvents e;
+  stage(0.05, "topology along the morph");  // its first call comes after a whole frame and its topology
   e.history =
       TrackTopology(morph, options.steps, [&](double share) { stage(0.05 + 0.1 * share, "topology along the morph"); });
   e.plan = PlanSurgery(e.history.events, e.history.frames.front(), e.history.frames.back(), m.sourceSurface,

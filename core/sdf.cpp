@@ -306,7 +306,10 @@ std::vector<Point3> ClosingCone(const Mesh &mesh) {
 // the nodes with an edge that may cross the mesh and at those near the cone (camelhead in
 // Table 1 row 1: 3.8% of the nodes, against all of them); W is flooded from them across the
 // other edges, and elsewhere w_mesh = W - w_cone (the cone's few triangles are cheap).
-std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, const std::vector<Point3> &cone) {
+// The interrupt is asked every kNodesBetweenPolls nodes of each pass; once it says stop, the
+// passes skip their work and the result means nothing (the caller returns).
+std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, const std::vector<Point3> &cone,
+                         const Interrupt &interrupt) {
   const Grid &grid = d.grid;
   const std::size_t count = grid.NodeCount();
   const vcg::Point3i &dims = grid.dims;
@@ -351,8 +354,10 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
     whole[n] = std::lround(w + coneWinding(p));
     inside[n] = winding.Inside(p, w);
   };
+  auto stop = [&](long n) { return (n & long(kNodesBetweenPolls - 1)) == 0 ? interrupt.Stop() : interrupt.Cancelled(); };
 #pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
   for (long n = 0; n < long(count); ++n) {
+    if (stop(n)) continue;
     bool near = nearCone[n];
     forEachNeighbour(n, [&](long m) { near = near || d.values[n] + d.values[m] <= h; });
     if (near) evaluate(n);
@@ -363,8 +368,10 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
   std::vector<long> queue;
   for (long n = 0; n < long(count); ++n)
     if ((evaluated[n] = whole[n] != kUnknown)) queue.push_back(n);
+  long popped = 0;
   for (long seed = 0;; ++seed) {
     while (!queue.empty()) {
+      if (stop(++popped)) return inside;
       const long n = queue.back();
       queue.pop_back();
       forEachNeighbour(n, [&](long m) {
@@ -380,7 +387,7 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
   // Elsewhere w_mesh = W - w_cone, its sign checked as an estimate's.
 #pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
   for (long n = 0; n < long(count); ++n)
-    if (!evaluated[n]) {
+    if (!stop(n) && !evaluated[n]) {
       const Point3 p = node(n);
       inside[n] = winding.Inside(p, double(whole[n]) - coneWinding(p));
     }
@@ -392,11 +399,13 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
 // in:  mesh — triangle mesh, closed or with holes; grid — the lattice
 // out: f(node) = +/- distance to the nearest surface point (distance_transform.h),
 //      negative where the generalized winding number is >= 1/2 (DESIGN.md: sdf.h).
-ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient, const Interrupt &interrupt) {
+namespace {
+
+template <class Gradient> ScalarField Signed(const Mesh &mesh, const Grid &grid, Gradient *gradient, const Interrupt &interrupt) {
   ScalarField f = UnsignedDistance(mesh, grid, gradient, interrupt);
   if (interrupt.Cancelled()) return f;
   const WindingNumber winding(mesh);
-  const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh));
+  const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh), interrupt);
   if (interrupt.Stop()) return f;
 #pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(f.values.size()); ++n)
@@ -405,6 +414,16 @@ ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *grad
       if (gradient && f.values[n] < 0) gradient->values[n] = -gradient->values[n];  // not on the surface: the normal
     }
   return f;
+}
+
+} // namespace
+
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient, const Interrupt &interrupt) {
+  return Signed(mesh, grid, gradient, interrupt);
+}
+
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, GradientField *gradient, const Interrupt &interrupt) {
+  return Signed(mesh, grid, gradient, interrupt);
 }
 
 } // namespace eulermap

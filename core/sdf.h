@@ -45,5 +45,7 @@ class WindingNumber {
 // it says stop, the unsigned distance as far as it got.
 ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, VectorField *gradient = nullptr,
                            const Interrupt &interrupt = Interrupt());
+// The same with the gradient in single precision (what the pipeline keeps: hermite_field.h).
+ScalarField SignedDistance(const Mesh &mesh, const Grid &grid, GradientField *gradient, const Interrupt &interrupt = Interrupt());
 
 } // namespace eulermap

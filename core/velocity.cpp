@@ -36,48 +36,103 @@ double Dot(const RedBlackArrays<3> &a, const RedBlackArrays<3> &b) {
 VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
                                     const VectorField &prior, const ScalarField &priorWeight, const Interrupt &interrupt) {
   grid_ = fk.grid;
-  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0));
+  // The first step allocates (and zeroes: the pages are touched) every array: seconds on big
+  // grids, so the interrupt is asked after each.
+  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0)), interrupt.Stop();
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
-    for (Vectors *v : {&g_, &b_, &x_, &r_, &p_, &q_}) v->Resize(layout_);
+    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_), interrupt.Stop();
     shift_.Resize(layout_);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
-  if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims)) multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_);
+  if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims))
+    multigrid_ = std::make_unique<BlockMultigrid>(grid_, alpha_, interrupt);
+  if (interrupt.Stop()) return VelocitySolve();
+  // The prior's weights beta_i for the multigrid (its coarse blocks), in p's first arrays (free
+  // until the solve).
+  RedBlackArrays<1> beta;
+  const bool lendBeta = multigrid && withPrior;
+  auto borrow = [&] {
+    for (int c = 0; c < 2; ++c) beta.c[c][0].swap(p_.c[c][0]);
+  };
+  if (lendBeta) borrow();
   // g = grad of (f_k + f_k+1)/2 (central differences, one-sided on the box's faces), f_t =
-  // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*)), shift = alpha n_i + beta_i;
-  // the multigrid's D_i = g g^T + beta_i I; x = V.
+  // (f_k+1 - f_k)/dt, b = -g f_t + beta P (right-hand side of (*), into r), shift = alpha n_i
+  // + beta_i; x = V.
   const vcg::Point3i d = grid_.dims;
   const double *f0 = fk.values.data(), *f1 = fk1.values.data();
   const Point3 *v = V.values.data(), *motion = withPrior ? prior.values.data() : nullptr;
   const double *weight = withPrior ? priorWeight.values.data() : nullptr;
-  ForEachRun(layout_, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t row) {
-    const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
-    float *g[3], *b[3], *x[3], *shift = shift_.c[c][0].data() + run.first;
-    float *D[6] = {};
-    for (int a = 0; a < 3; ++a)
-      g[a] = g_.c[c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first, x[a] = x_.c[c][a].data() + run.first;
-    if (multigrid)
-      for (int e = 0; e < 6; ++e) D[e] = multigrid_->Data().c[c][e].data() + run.first;
-    for (int t = 0; t < run.count; ++t) {
-      const int i = run.firstI + 2 * t;
-      const std::size_t idx = row + i;
-      const bool xLo = i > 0, xHi = i + 1 < d.X();
-      const Point3 mean = (fk.NodeGradient(i, j, k) + fk1.NodeGradient(i, j, k)) * 0.5;
-      const double gx = mean[0], gy = mean[1], gz = mean[2];
-      const double beta = withPrior ? weight[idx] : 0, ft = (f1[idx] - f0[idx]) / dt;
-      g[0][t] = gx, g[1][t] = gy, g[2][t] = gz;
-      b[0][t] = -gx * ft, b[1][t] = -gy * ft, b[2][t] = -gz * ft;
-      if (withPrior) b[0][t] += motion[idx][0] * beta, b[1][t] += motion[idx][1] * beta, b[2][t] += motion[idx][2] * beta;
-      x[0][t] = v[idx][0], x[1][t] = v[idx][1], x[2][t] = v[idx][2];
-      shift[t] = alpha_ * int(across + xLo + xHi) + beta;
-      if (multigrid) {
-        D[0][t] = float(gx * gx + beta), D[1][t] = float(gx * gy), D[2][t] = float(gx * gz);
-        D[3][t] = float(gy * gy + beta), D[4][t] = float(gy * gz), D[5][t] = float(gz * gz + beta);
+  const std::size_t sy = std::size_t(d.X()), sz = sy * d.Y();
+  const double whole = 0.5 / grid_.h, half = 0.5 * whole;  // 0.5: of the mean of the two frames
+  const int planesBetweenPolls = std::max(1, int(kNodesBetweenPolls / (sy * d.Y())));
+  const long nx = d.X();
+#pragma omp parallel if (layout_.Nodes() >= kParallelNodes) num_threads(Threads())
+  {
+    // A real row at a time: its nodes in Grid::Index order first (contiguous: vectorised),
+    // then split by colour into the layout's arrays.
+    std::vector<float> G[3], B[3], X[3], S(nx), W(nx);
+    for (int a = 0; a < 3; ++a) G[a].resize(nx), B[a].resize(nx), X[a].resize(nx);
+    const std::vector<double> none(withPrior ? 0 : nx, 0.0);  // beta without a prior
+#pragma omp for schedule(static)
+    for (int k = 0; k < d.Z(); ++k)
+      for (int j = 0; j < d.Y(); ++j) {
+        if (j == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
+        const std::size_t row = sy * (j + std::size_t(d.Y()) * k);
+        const int across = (j > 0) + (j + 1 < d.Y()) + (k > 0) + (k + 1 < d.Z());  // neighbours in y and z
+        // Central differences (one-sided on the box's faces); in y and z the same offsets along the row.
+        const long yLo = j > 0 ? long(sy) : 0, yHi = j + 1 < d.Y() ? long(sy) : 0, zLo = k > 0 ? long(sz) : 0,
+                   zHi = k + 1 < d.Z() ? long(sz) : 0;
+        const double yScale = yLo && yHi ? half : whole, zScale = zLo && zHi ? half : whole;
+        const double *a0 = f0 + row, *a1 = f1 + row, *w = withPrior ? weight + row : none.data();
+        const Point3 *vr = v + row;
+        // Node i with x-neighbours lo, hi, the x-difference's scale and its neighbour count n.
+        auto node = [&](long i, long lo, long hi, double xScale, int n) {
+          const double gx = ((a0[hi] + a1[hi]) - (a0[lo] + a1[lo])) * xScale;
+          const double gy = ((a0[i + yHi] + a1[i + yHi]) - (a0[i - yLo] + a1[i - yLo])) * yScale;
+          const double gz = ((a0[i + zHi] + a1[i + zHi]) - (a0[i - zLo] + a1[i - zLo])) * zScale;
+          const double beta = w[i], ft = (a1[i] - a0[i]) / dt;
+          G[0][i] = float(gx), G[1][i] = float(gy), G[2][i] = float(gz);
+          B[0][i] = float(-gx * ft), B[1][i] = float(-gy * ft), B[2][i] = float(-gz * ft);
+          X[0][i] = float(vr[i][0]), X[1][i] = float(vr[i][1]), X[2][i] = float(vr[i][2]);
+          S[i] = float(alpha_ * n + beta), W[i] = float(beta);
+        };
+        if (nx == 1) {
+          node(0, 0, 0, whole, across);
+        } else {
+          node(0, 0, 1, whole, across + 1);
+#pragma omp simd
+          for (long i = 1; i < nx - 1; ++i) node(i, i - 1, i + 1, half, across + 2);
+          node(nx - 1, nx - 2, nx - 1, whole, across + 1);
+        }
+        if (withPrior)
+          for (long i = 0; i < nx; ++i)
+            for (int a = 0; a < 3; ++a) B[a][i] = float(B[a][i] + motion[row + i][a] * weight[row + i]);
+        for (int c = 0; c < 2; ++c) {
+          const RedBlackLayout::Run run = layout_.RowRun(c, j, k);
+          const std::size_t m0 = run.first;
+          const int i0 = run.firstI;
+          for (int a = 0; a < 3; ++a) {
+            float *g = g_.c[c][a].data() + m0, *b = r_.c[c][a].data() + m0, *x = x_.c[c][a].data() + m0,
+                  *last = previous_.c[c][a].data() + m0;
+            const float *Ga = G[a].data() + i0, *Ba = B[a].data() + i0, *Xa = X[a].data() + i0;
+            for (int t = 0; t < run.count; ++t) {
+              g[t] = Ga[2 * t], b[t] = Ba[2 * t], x[t] = Xa[2 * t];
+              last[t] = Xa[2 * t] - last[t];  // d = V_k-1 - V_k-2
+            }
+          }
+          float *shift = shift_.c[c][0].data() + m0;
+          for (int t = 0; t < run.count; ++t) shift[t] = S[i0 + 2 * t];
+          if (lendBeta) {
+            float *to = beta.c[c][0].data() + m0;
+            for (int t = 0; t < run.count; ++t) to[t] = W[i0 + 2 * t];
+          }
+        }
       }
-    }
-  });
-  const double bNorm = std::sqrt(Dot(b_, b_));
+  }
+  if (multigrid) multigrid_->Update(g_, shift_, lendBeta ? &beta : nullptr);
+  if (lendBeta) borrow();  // p gets its arrays back
+  const double bNorm = std::sqrt(Dot(r_, r_));
   VelocitySolve s;
   if (bNorm == 0) {  // no motion: V = 0 solves (*) exactly
     std::fill(V.values.begin(), V.values.end(), Point3(0, 0, 0));
@@ -85,14 +140,17 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   }
   if (interrupt.Stop()) return s;  // the frame and the system's assembly were a piece of work too
   if (method_ == Method::GaussSeidel) {
+    previous_ = x_;  // V_k-1 (Gauss-Seidel starts from it: the comparison of the paper's update)
+    p_ = r_;  // b
     s = SolveGaussSeidel(x_, bNorm, interrupt);
   } else if (method_ == Method::ConjugateGradient) {
     s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); }, interrupt);
   } else {
-    multigrid_->Update();
-    s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z); },
+    // A poll before each V-cycle too: an iteration is two halves of about equal work.
+    s = SolveConjugateGradient(x_, bNorm, [&](const Vectors &r, Vectors &z) { return interrupt.Stop(), multigrid_->Precondition(r, z); },
                                interrupt);
   }
+  interrupt.Stop();  // the solve's last iteration
   Point3 *out = V.values.data();
   ForEachRun(layout_, 0, 1, [&](int, int, int c, const RedBlackLayout::Run &run, std::size_t row) {
     const float *x[3] = {x_.c[c][0].data() + run.first, x_.c[c][1].data() + run.first, x_.c[c][2].data() + run.first};
@@ -130,18 +188,19 @@ double VelocitySolver::Apply(const Vectors &x, Vectors &out) const {
   return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 
-double VelocitySolver::Residual(const Vectors &x, Vectors &r) const {
-  Apply(x, r);
-  const auto pb = Arrays(b_);
+double VelocitySolver::Residual(const Vectors &x, const Vectors &b, Vectors &r, Vectors &ax) const {
+  Apply(x, ax);
+  const auto pb = Arrays(b);
+  const auto pa = Arrays(ax);
   const auto pr = Arrays(r);
   return std::sqrt(BlockSum(long(layout_.Positions()), [&](long begin, long end) {
     double s = 0;
     for (int e = 0; e < 6; ++e) {
-      const float *b = pb[e];
+      const float *u = pb[e], *w = pa[e];
       float *v = pr[e];
 #pragma omp simd reduction(+ : s)
       for (long m = begin; m < end; ++m) {
-        v[m] = b[m] - v[m];
+        v[m] = u[m] - w[m];
         s += double(v[m]) * v[m];
       }
     }
@@ -180,20 +239,53 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   const long n = long(layout_.Positions());
   Vectors &r = r_, &z = q_, &p = p_, &q = q_;
   const auto px = Arrays(x), pr = Arrays(r), pz = Arrays(z), pp = Arrays(p), pq = Arrays(q);
-  double rNorm = Residual(x, r);
-  double rz = precondition(r, z);
-  p = z;
-  while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
+  // The start: x = V_k-1 + theta d along d = V_k-1 - V_k-2 (in previous_), theta minimising the
+  // error's energy along d: theta = r . d / d . A d with r = b - A V_k-1 (theta = 1: the linear
+  // extrapolation in time; never a worse start than V_k-1). previous_ then holds V_k-1.
+  const auto pd = Arrays(previous_);
+  const double dAd = Apply(previous_, q);  // q = A d
+  Residual(x, r, r, p);  // r held b; p: scratch
+  const double theta = dAd > 0 ? Dot(r, previous_) / dAd : 0;
+  const float thetaf = float(theta);
+  double rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += theta d, r -= theta A d, |r|^2
+    double t = 0;
+    for (int e = 0; e < 6; ++e) {
+      float *u = px[e], *v = pr[e], *d = pd[e];
+      const float *dq = pq[e];
+#pragma omp simd reduction(+ : t)
+      for (long m = begin; m < end; ++m) {
+        const float start = u[m];
+        u[m] = start + d[m] * thetaf;
+        d[m] = start;
+        v[m] -= dq[m] * thetaf;
+        t += double(v[m]) * v[m];
+      }
+    }
+    return t;
+  }));
+  auto done = [&] { return rNorm <= tolerance_ * bNorm || s.iterations >= maxIterations_; };
+  double rz = done() ? 0 : precondition(r, z);
+  if (!done()) p = z;
+  // x += step p is put off to the next pass over p (p = z + beta p), or to the end.
+  auto advance = [&](float step) {
+#pragma omp parallel num_threads(Threads())
+    for (int e = 0; e < 6; ++e) {
+      float *u = px[e];
+      const float *v = pp[e];
+#pragma omp for simd schedule(static) nowait
+      for (long m = 0; m < n; ++m) u[m] += v[m] * step;
+    }
+  };
+  while (!done() && !interrupt.Stop()) {
     const double step = rz / Apply(p, q);  // q = A p
     const float stepf = float(step);
-    rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += step p, r -= step q, then |r|^2
+    rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // r -= step q, then |r|^2
       double t = 0;
       for (int e = 0; e < 6; ++e) {
-        float *u = px[e], *v = pr[e];
-        const float *dp = pp[e], *dq = pq[e];
+        float *v = pr[e];
+        const float *dq = pq[e];
 #pragma omp simd reduction(+ : t)
         for (long m = begin; m < end; ++m) {
-          u[m] += dp[m] * stepf;
           v[m] -= dq[m] * stepf;
           t += double(v[m]) * v[m];
         }
@@ -201,15 +293,22 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
       return t;
     }));
     ++s.iterations;
+    if (done()) {  // no preconditioning for a direction that is not taken
+      advance(stepf);
+      break;
+    }
     const double rzNext = precondition(r, z);
     const float beta = float(rzNext / rz);
     rz = rzNext;
 #pragma omp parallel num_threads(Threads())
-    for (int e = 0; e < 6; ++e) {  // p = z + beta p
-      float *u = pp[e];
+    for (int e = 0; e < 6; ++e) {  // x += step p, then p = z + beta p
+      float *u = pp[e], *w = px[e];
       const float *v = pz[e];
 #pragma omp for simd schedule(static) nowait
-      for (long m = 0; m < n; ++m) u[m] = v[m] + u[m] * beta;
+      for (long m = 0; m < n; ++m) {
+        w[m] += u[m] * stepf;
+        u[m] = v[m] + u[m] * beta;
+      }
     }
   }
   s.residual = rNorm / bNorm;
@@ -220,7 +319,8 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const I
   VelocitySolve s;
   const long hy = layout_.RowStride(), hz = layout_.PlaneStride();
   const float alpha = float(alpha_);
-  double rNorm = Residual(x, r_);
+  const Vectors &rhs = p_;
+  double rNorm = Residual(x, rhs, r_, r_);
   // Residuals cost as much as a sweep: check every few sweeps.
   const int checkEvery = 10;
   while (rNorm > tolerance_ * bNorm && s.iterations < maxIterations_ && !interrupt.Stop()) {
@@ -231,7 +331,7 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const I
           const float *o[3], *b[3], *g[3], *shift = shift_.c[c][0].data() + run.first;
           float *v[3];
           for (int a = 0; a < 3; ++a)
-            v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, b[a] = b_.c[c][a].data() + run.first,
+            v[a] = x.c[c][a].data() + run.first, o[a] = x.c[1 - c][a].data() + run.first, b[a] = rhs.c[c][a].data() + run.first,
             g[a] = g_.c[c][a].data() + run.first;
           // Eq. 5 from (*): V = Vbar - g (g . Vbar + f_t) / (alpha n + |g|^2), with b = -g f_t,
           // written for a general b: solve (g g^T + c I) V = alpha sum + b, c = alpha n_i + beta_i.
@@ -247,7 +347,7 @@ VelocitySolve VelocitySolver::SolveGaussSeidel(Vectors &x, double bNorm, const I
             v[2][m] = (r2 - g[2][m] * k) / shift[m];
           }
         });
-    rNorm = Residual(x, r_);
+    rNorm = Residual(x, rhs, r_, r_);
   }
   s.residual = rNorm / bNorm;
   return s;

@@ -26,7 +26,11 @@
 //     Vbar = sum_j V_j / n_i; red-black ordering so that both colours run in parallel;
 //   - conjugate gradients preconditioned by the exact inverse of each node's 3x3 block;
 //   - conjugate gradients preconditioned by a multigrid V-cycle (multigrid.h), the default.
-// All start from the V passed in (the previous step's: a warm start).
+// All start from the V passed in (the previous step's: a warm start); the conjugate gradients
+// move it along d = V_k-1 - V_k-2 (the start of the solve before) to the least error energy
+// on that line: x = V_k-1 + theta d, theta = r . d / d . A d. Where V changes smoothly from
+// step to step theta is near 1 (the linear extrapolation in time), and the start is never
+// worse than V_k-1 in the energy norm.
 #pragma once
 
 #include "field.h"
@@ -52,8 +56,9 @@ class VelocitySolver {
 
   // in:  frames fk = f(., t_k), fk1 = f(., t_k + dt) on one grid; V, the start (resized
   //      and zeroed when its grid differs); prior P and its weights beta on the same
-  //      grid, or empty fields for none; interrupt, asked once the system is assembled and
-  //      before each iteration (interrupt.h)
+  //      grid, or empty fields for none; interrupt, asked once the first step's arrays are
+  //      allocated, every kNodesBetweenPolls nodes of the assembly and once it is done, before
+  //      each iteration and each V-cycle, and at the end (interrupt.h)
   // out: V = V_k, and the solve's figures; where the interrupt stops it, the iterate it had
   VelocitySolve Solve(const ScalarField &fk, const ScalarField &fk1, double dt, VectorField &V,
                       const VectorField &prior = VectorField(), const ScalarField &priorWeight = ScalarField(),
@@ -70,8 +75,8 @@ class VelocitySolver {
   VelocitySolve SolveConjugateGradient(Vectors &x, double bNorm, const std::function<double(const Vectors &, Vectors &)> &precondition,
                                        const Interrupt &interrupt);
   VelocitySolve SolveGaussSeidel(Vectors &x, double bNorm, const Interrupt &interrupt);
-  // r = b - A x, returns ||r||.
-  double Residual(const Vectors &x, Vectors &r) const;
+  // r = b - A x, with ax = A x on the way (r may be b or ax); returns ||r||.
+  double Residual(const Vectors &x, const Vectors &b, Vectors &r, Vectors &ax) const;
   // out = A x (the operator of (*)); returns x . A x.
   double Apply(const Vectors &x, Vectors &out) const;
   // z = the exact inverse of each node's block g g^T + (alpha n_i + beta_i) I times r; returns r . z.
@@ -81,15 +86,20 @@ class VelocitySolver {
   Method method_;
   double tolerance_;
   int maxIterations_;
-  // Per-step data of (*), in layout_: g, b = -g f_t + beta P, and shift = alpha n_i + beta_i per node.
+  // Per-step data of (*), in layout_: g and shift = alpha n_i + beta_i per node. The
+  // right-hand side b = -g f_t + beta P is assembled into r_ (conjugate gradients: r = b - A x
+  // in place; Gauss-Seidel: b moved to p_, which it does not use otherwise).
   Grid grid_;
   RedBlackLayout layout_;
-  Vectors g_, b_;
+  Vectors g_;
   RedBlackArrays<1> shift_;
   // Kept from step to step (same grid): the multigrid levels and the solvers' vectors (the
-  // preconditioned residual z shares q's: q = A p is dead once r is updated).
+  // preconditioned residual z shares q's: q = A p is dead once r is updated; the prior's
+  // weights, which the multigrid reads once a step, borrow p's storage before the solve).
   std::unique_ptr<BlockMultigrid> multigrid_;
   Vectors x_, r_, p_, q_;
+  // V_k-2, the start of the last solve (during the assembly and the start: d = V_k-1 - V_k-2).
+  Vectors previous_;
 };
 
 } // namespace eulermap

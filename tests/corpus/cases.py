@@ -412,9 +412,9 @@ def cases(samples_dir):
             ("hole_radius_inf", dict(hole_radius=INF), ["hole_radius ", "is out of range"]),
             ("hole_radius_0", dict(hole_radius=0), ["hole_radius 0 is out of range"]),
             ("grid_3000_memory", dict(grid_resolution=3000), ["lower grid_resolution"]),
-            # about 11 GB at 270 B a node (memory.h): more than the 6 GiB address space of the run,
-            # less than the machine has
-            ("grid_350_over_limit", dict(grid_resolution=350), ["lower grid_resolution"]),
+            # about 10 GB at 180 B a node with RunBytes' margin (memory.h): more than the 6 GiB
+            # address space of the run, less than the machine has
+            ("grid_400_over_limit", dict(grid_resolution=400), ["lower grid_resolution"]),
             ("anchor_pairs_commas", dict(anchor_pairs=",,,"), ["holds no pair of vertex indices"])]:
         add(name, "parameter " + ", ".join(f"{k}={v}" for k, v in params.items()), SPHERE, TORUS, Error(texts),
             params=params)

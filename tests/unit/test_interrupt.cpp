@@ -32,6 +32,8 @@ struct Case {
 };
 
 bool IsStep(const std::string &stage) { return stage.rfind("step ", 0) == 0; }
+// Step 2 (step 1 also allocates the solver's arrays, with a call after each).
+bool IsSecondStep(const std::string &stage) { return stage.rfind("step 2 ", 0) == 0; }
 
 TEST(Interrupt, ProgressComesBeforeEachSolverIterationAndEverySlabOfASweep) {
   Case c;
@@ -74,11 +76,36 @@ void ExpectCancelledAt(bool (*at)(const std::string &), int n) {
 }
 
 TEST(Interrupt, CancelInsideAVelocitySolveEndsTheMap) {
-  ExpectCancelledAt(IsStep, 2);  // the first iteration's poll of step 1
+  ExpectCancelledAt(IsSecondStep, 5);  // the stage, the assembly, the system, the first V-cycle, the first iteration
+}
+
+// A step of a big grid spends seconds before its first iteration (the first step allocates
+// and zeroes the solver's arrays, every step assembles its system): calls during the first
+// step's allocation, every kNodesBetweenPolls nodes of the assembly (here one plane group: one
+// call) and one once the system is assembled.
+TEST(Interrupt, ProgressComesWhileAStepAllocatesAndAssembles) {
+  Case c;
+  int stepCalls = 0;
+  Result result;
+  ComputeMap(c.source, c.target, {}, c.options, result, [&](double, const std::string &stage) {
+    stepCalls += IsStep(stage);
+    return true;
+  });
+  EXPECT_GE(stepCalls, 3 * c.options.steps + 1 + result.report.solverFigures.totalIterations)
+      << "per step: the stage, the assembly, the assembled system, each iteration; the allocation once";
+}
+
+TEST(Interrupt, CancelWhileAVelocitySystemIsAssembledEndsTheMap) {
+  ExpectCancelledAt(IsSecondStep, 2);  // the stage, then the assembly's poll
+}
+
+TEST(Interrupt, CancelWhileTheSolverAllocatesEndsTheMap) {
+  ExpectCancelledAt(IsStep, 3);  // step 1: the stage, V, then the first of the solver's arrays
 }
 
 TEST(Interrupt, CancelInsideTheDistanceSweepsEndsTheMap) {
-  ExpectCancelledAt([](const std::string &stage) { return stage == "signed distance fields"; }, 2);
+  // The stage, the distance arrays, the four seeding phases, then the first sweep's poll.
+  ExpectCancelledAt([](const std::string &stage) { return stage == "signed distance fields"; }, 7);
 }
 
 TEST(Interrupt, OnlyTheThreadThatMadeItAsksTheCallbackOthersReadTheAnswer) {

@@ -21,17 +21,21 @@ struct Problem {
   Grid grid;
   RedBlackLayout layout;
   BlockMultigrid multigrid;
+  RedBlackArrays<3> g;      // 0
+  RedBlackArrays<1> shift;  // alpha n_i + beta
 
   explicit Problem(int nodes)
       : grid(Grid::WithNodes(Box3(Point3(0, 0, 0), Point3(1, 1, 1)), vcg::Point3i(nodes, nodes, nodes), 0)),
         layout(grid.dims), multigrid(grid, kAlpha) {
-    RedBlackArrays<6> &D = multigrid.Data();
+    RedBlackArrays<1> beta;
+    beta.Resize(layout), g.Resize(layout), shift.Resize(layout);
     grid.ForEachNode([&](int i, int j, int k, std::size_t) {
       const int c = RedBlackLayout::Colour(i, j, k);
       const std::size_t m = layout.Position(i, j, k);
-      for (int e : {0, 3, 5}) D.c[c][e][m] = float(kBeta);  // xx, yy, zz
+      beta.c[c][0][m] = float(kBeta);
+      shift.c[c][0][m] = float(kAlpha * layout.NeighbourCount(i, j, k) + kBeta);
     });
-    multigrid.Update();
+    multigrid.Update(g, shift, &beta);
   }
 
   // (A x)_i = (beta + alpha n_i) x_i - alpha sum_j x_j over the grid neighbours j, per component.
