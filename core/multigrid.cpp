@@ -232,17 +232,8 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero, std::vector<double> *
       for (long m = 0; m < run.count; ++m) dot += double(b[0][m]) * x[0][m] + double(b[1][m]) * x[1][m] + double(b[2][m]) * x[2][m];
       (*plane)[k] += dot;
     };
-    if (finest) {
-      // (g g^T + s I)^-1 t = (t - g (g . t) / (s + |g|^2)) / s (Sherman-Morrison), s = alpha n_i + beta_i.
-      const float *g[3], *shift = shift_->c[c][0].data() + run.first;
-      for (int a = 0; a < 3; ++a) g[a] = g_->c[c][a].data() + run.first;
-      auto solve = [&](long m, float t0, float t1, float t2) {
-        const float gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
-        const float k = (g[0][m] * t0 + g[1][m] * t1 + g[2][m] * t2) / (shift[m] + gg), inv = 1.0f / shift[m];
-        x[0][m] = (t0 - g[0][m] * k) * inv;
-        x[1][m] = (t1 - g[1][m] * k) * inv;
-        x[2][m] = (t2 - g[2][m] * k) * inv;
-      };
+    // x = D^-1 (b + alpha sum_j x_j) at each node of the run, D^-1 applied by `solve`.
+    auto sweep = [&](auto &&solve) {
       if (fromZero) {
 #pragma omp simd
         for (long m = 0; m < run.count; ++m) solve(m, b[0][m], b[1][m], b[2][m]);
@@ -252,24 +243,27 @@ void BlockMultigrid::Sweep(Level &l, int c, bool fromZero, std::vector<double> *
           solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
                 b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
       }
+    };
+    if (finest) {
+      // (g g^T + s I)^-1 t = (t - g (g . t) / (s + |g|^2)) / s (Sherman-Morrison), s = alpha n_i + beta_i.
+      const float *g[3], *shift = shift_->c[c][0].data() + run.first;
+      for (int a = 0; a < 3; ++a) g[a] = g_->c[c][a].data() + run.first;
+      sweep([&](long m, float t0, float t1, float t2) {
+        const float gg = g[0][m] * g[0][m] + g[1][m] * g[1][m] + g[2][m] * g[2][m];
+        const float k = (g[0][m] * t0 + g[1][m] * t1 + g[2][m] * t2) / (shift[m] + gg), inv = 1.0f / shift[m];
+        x[0][m] = (t0 - g[0][m] * k) * inv;
+        x[1][m] = (t1 - g[1][m] * k) * inv;
+        x[2][m] = (t2 - g[2][m] * k) * inv;
+      });
       return addDot();
     }
     const float *inv[6];
     for (int e = 0; e < 6; ++e) inv[e] = l.inverse.c[c][e].data() + run.first;
-    auto solve = [&](long m, float s0, float s1, float s2) {
+    sweep([&](long m, float s0, float s1, float s2) {
       x[0][m] = inv[0][m] * s0 + inv[1][m] * s1 + inv[2][m] * s2;
       x[1][m] = inv[1][m] * s0 + inv[3][m] * s1 + inv[4][m] * s2;
       x[2][m] = inv[2][m] * s0 + inv[4][m] * s1 + inv[5][m] * s2;
-    };
-    if (fromZero) {
-#pragma omp simd
-      for (long m = 0; m < run.count; ++m) solve(m, b[0][m], b[1][m], b[2][m]);
-    } else {
-#pragma omp simd
-      for (long m = 0; m < run.count; ++m)
-        solve(m, b[0][m] + alpha * NeighbourSum(o[0], m, w, hy, hz), b[1][m] + alpha * NeighbourSum(o[1], m, w, hy, hz),
-              b[2][m] + alpha * NeighbourSum(o[2], m, w, hy, hz));
-    }
+    });
     addDot();
   });
 }
