@@ -3,7 +3,8 @@
 // tracked so that surgery can weigh each event against those after it (surgery_plan.h).
 //
 // Inputs:  the morph (morph.h), its number of steps K, a progress callback (may be empty;
-//          called before each step with the share done, 0..1; it may throw to cancel)
+//          called before each step's frame, its sign flips and its topology with the share
+//          done, 0..1; it may throw to cancel)
 // Outputs: frames: the topology of f(., 0) (step -1), then of each f(., t_k+1) where it
 //          changed; events: every event of every step, in order (step, then flip order).
 // Frames are made one at a time (Morph::Frame, Eq. 1) and dropped: memory is one frame and
