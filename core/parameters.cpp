@@ -104,11 +104,15 @@ const std::vector<Parameter> &Parameters() {
       {"align", K::Enum, "Alignment",
        "How the target is placed in the source's frame when no anchors are given: 'none' keeps "
        "it where it is; 'centre-and-scale' moves its centroid onto the source's and scales its "
-       "bounding-box diagonal to the source's. With anchors, the similarity fitted to them is "
-       "used instead. The map always lands on the target where it really is.",
-       {"none", "centre-and-scale"},
-       [](const Options &o) { return double(o.align == Align::None ? 0 : 1); },
-       [](Options &o, double v) { o.align = v == 0 ? Align::None : Align::CentreAndScale; }},
+       "bounding-box diagonal to the source's, and where that map fails its own checks (the "
+       "log's warnings) tries 'overlap' as well and keeps the better map; 'overlap' moves and "
+       "scales it further (no rotation) so that the two insides overlap most, which spares the "
+       "morph parts that grow from nothing and handles that open and close again. With "
+       "anchors, the similarity fitted to them is used instead. The map always lands on the "
+       "target where it really is.",
+       {"none", "centre-and-scale", "overlap"},
+       [](const Options &o) { return double(int(o.align)); },
+       [](Options &o, double v) { o.align = Align(int(v)); }},
       {parameter::kSourceAnchors, K::OpenFile, "Source anchors (.pp)",
        "MeshLab picked-points file (Edit > PickPoints, saved as .pp) with named anchor points on "
        "the source. Empty: the .pp beside the source's file with the same base name "

@@ -115,7 +115,7 @@ Point3 SurfaceCentroid(const Mesh &mesh) {
 }
 
 // The placement P of placement.h.
-//   source, target: the meshes (used only without anchors, for Align::CentreAndScale)
+//   source, target: the meshes (used only without anchors, for Align::CentreAndScale and Overlap)
 //   from:           target-side anchors b_i
 //   to:             source-side anchors a_i, matched to `from` by index
 //   align:          what to do without anchors

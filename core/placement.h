@@ -5,6 +5,8 @@
 //   - align = none, no anchors:           P = identity
 //   - align = centre-and-scale, no anchors: P moves the target's centroid onto the
 //     source's and scales its bounding-box diagonal to the source's
+//   - align = overlap, no anchors: centre-and-scale here; the pipeline then moves and
+//     scales the target to overlap the source's inside most (overlap.h)
 //   - 1 to 3 anchors, or more:           P = the least-squares similarity taking the
 //     target anchors b_i onto the source anchors a_i (1 anchor: translation only;
 //     2 anchors: translation and scale; 3 or more: Umeyama's rotation too)
@@ -26,7 +28,7 @@ struct Similarity {
   Similarity Inverse() const;
 };
 
-enum class Align { None, CentreAndScale };
+enum class Align { None, CentreAndScale, Overlap };  // Overlap: overlap.h, from centre-and-scale
 
 // Centroid of the surface (area-weighted).
 Point3 SurfaceCentroid(const Mesh &mesh);

@@ -112,6 +112,7 @@ std::string Report::ToText() const {
               gridNodes.Y(), gridNodes.Z(), cellSize, steps, alpha, threads);
   o << Format("source vertices: %d; anchors: %d; placement: %s; morph: %s\n", sourceVertices, anchors,
               placement.c_str(), morphMode.c_str());
+  if (!placementsTried.empty()) o << "placements tried: " << placementsTried << "\n";
   if (!morphsTried.empty()) o << "morphs tried: " << morphsTried << "\n";
   o << Format("velocity solver: %s, %ld iterations in all, at most %d in a step, final residual at most %.2e\n",
               solver.c_str(), solverFigures.totalIterations, solverFigures.maxIterations, solverFigures.maxFinalResidual);

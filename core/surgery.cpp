@@ -33,14 +33,8 @@ constexpr double kOutsideChordSag = 0.25;
 constexpr double kSpreadStretch = 2;  // edges stretched more than this (and long) are split anywhere
 constexpr double kReachCells = 10;  // the event's crossings count within this many cells (+ hole radius)
 constexpr double kTakesPartCells = 6;  // the tracked surface takes part in an event this near (+ hole radius)
+constexpr double kSheetConeDegrees = 60;  // a sheet meeting another lies within this angle of the cut's axis
 constexpr double kCollapsedCells = 5;  // a piece within this many cells (+ hole radius) of a dying part goes with it
-
-double DistanceToTriangle(const Point3 &p, const Point3 &a, const Point3 &b, const Point3 &c) {
-  double distance;
-  Point3 closest;
-  vcg::TrianglePointDistance(vcg::Triangle3<double>(a, b, c), p, distance, closest);
-  return distance;
-}
 
 bool FarFromBox(const Point3 &p, double r, const Point3 &a, const Point3 &b, const Point3 &c) {
   for (int x = 0; x < 3; ++x)
@@ -64,6 +58,18 @@ double RayTriangle(const Point3 &o, const Point3 &d, const Point3 &a, const Poin
   if (v < 0 || u + v > 1) return -1;
   const double s = (e2 * q) / det;
   return s >= 0 ? s : -1;
+}
+
+// The point of triangle (a, b, c) nearest to p.
+Point3 ClosestOnTriangle(const Point3 &p, const Point3 &a, const Point3 &b, const Point3 &c) {
+  double distance;
+  Point3 closest;
+  vcg::TrianglePointDistance(vcg::Triangle3<double>(a, b, c), p, distance, closest);
+  return closest;
+}
+
+double DistanceToTriangle(const Point3 &p, const Point3 &a, const Point3 &b, const Point3 &c) {
+  return vcg::Distance(p, ClosestOnTriangle(p, a, b, c));
 }
 
 } // namespace
@@ -252,8 +258,13 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
   const double reach = kReachCells * cell_ + radius_;
   std::vector<int> cut;
   if (shape == CutShape::Discs) {
-    // Two sheets face each other along the axis: on each side, the nearest face it pierces,
+    // Two sheets face each other along the axis: on each side, the nearest face the line
+    // (x, axis) pierces, else (the line passes by a sheet that meets it at a tip: a rail of
+    // chair -> chair_rails growing from a leg at 64 cells lies 0.37 cells from x, and the
+    // line first meets the surface 17 cells away) the face within kSheetConeDegrees of the
+    // axis whose point nearest to x is nearest over the cosine of its angle to the axis;
     // and the faces within the sphere's radius of that point.
+    const double cone = std::cos(kSheetConeDegrees * M_PI / 180);
     for (double side : {1.0, -1.0}) {
       int hit = -1;
       double nearest = reach;
@@ -263,11 +274,23 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
         const double s = RayTriangle(o, d * side, position[t.v[0]], position[t.v[1]], position[t.v[2]]);
         if (s >= 0 && s < nearest) nearest = s, hit = n;
       }
+      Point3 q = o + d * (side * nearest);
+      const bool pierced = hit >= 0;
+      double best = reach / cone;
+      for (int n = 0; !pierced && n < int(tris_.size()); ++n) {
+        const Tri &t = tris_[n];
+        if (t.state != kAlive) continue;
+        const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+        if (FarFromBox(o, std::min(best, reach), a, b, c)) continue;
+        const Point3 p = ClosestOnTriangle(o, a, b, c);
+        const double dist = vcg::Distance(p, o), along = (p - o) * d * side;
+        if (dist > reach || along <= 0 || along < cone * dist) continue;
+        if (const double key = dist * dist / along; key < best) best = key, hit = n, q = p;
+      }
       if (hit < 0) {
         *bothSheets = false;
         continue;
       }
-      const Point3 q = o + d * (side * nearest);
       for (int n = 0; n < int(tris_.size()); ++n) {
         const Tri &t = tris_[n];
         if (t.state != kAlive) continue;

@@ -24,8 +24,9 @@
 //          point inside that sphere (no rim vertex is left where trajectories part);
 //      (b) the faces nearest to x that the event's own geometry crosses. Near a critical
 //          point V vanishes, so the tracked sheets part before they reach x and may never
-//          meet the sphere. Discs: on each side, the nearest face the line (x, d) pierces
-//          (within kReachCells + hole radius), with those within the radius of that point;
+//          meet the sphere. Discs: on each side, the nearest face the line (x, d) pierces, else
+//          (a sheet meeting it at a tip) the nearest within 60 degrees of d (within
+//          kReachCells + hole radius), with those within the radius of that point;
 //          Band: the loop of faces crossing the plane through x normal to d around the neck;
 //   3. clean: the rim left must be a manifold boundary and look deliberate:
 //        - ears: a face with two or more edges on a rim goes (no dangling faces);
@@ -124,8 +125,9 @@ class Surgery {
   std::vector<int> CollapsedPiece(const Point3 &x, double reach, const std::vector<Point3> &position) const;
   // Step 2 (a): the faces within the sphere's radius of x, or with a corner inside it.
   std::vector<int> InSphere(const Point3 &x, const std::vector<Point3> &position) const;
-  // Step 2 (b): the faces the event's geometry crosses nearest to x (Discs: pierced by the
-  // line (x, axis) on each side, with those within the radius there; Band: the loop
+  // Step 2 (b): the faces the event's geometry crosses nearest to x (Discs: on each side,
+  // the nearest the line (x, axis) pierces, else the nearest within a cone around it, with
+  // those within the radius there; Band: the loop
   // crossing the plane through x normal to axis).
   // bothSheets: set false when a side has no tracked face (Discs).
   std::vector<int> Crossing(const Point3 &x, const Point3 &axis, CutShape shape, const std::vector<Point3> &position,

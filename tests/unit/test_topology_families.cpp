@@ -1,6 +1,7 @@
 // Topology change on families of shapes, made here (tests/support/shapes.h), at
-// grids 48, 64, 96 and 128, with the default placement (centre-and-scale, no anchors: the
-// source does not enclose the target): genus up and down, parts merging and splitting,
+// grids 48, 64, 96 and 128, with the default placement (no anchors: centre-and-scale, and
+// where that map fails its own figures the placement that overlaps the insides most,
+// overlap.h; the source is never made to enclose the target): genus up and down, parts merging and splitting,
 // furniture with thin parts both ways. Every case asserts
 //   - the cut source's components, boundary loops and Euler characteristic are what a
 //     continuous map onto the target needs (topology.h, NeededCut; Report::CutAsNeeded),
@@ -60,40 +61,34 @@ struct Open {
 };
 // Measured at the commit that wrote them (figures in the `family |` lines and the closing
 // note of issue 12): grids 48 and 64 and the FinePairs at 96 and 128; the other pairs at 96
-// and 128 (EULERMAP_FAMILIES_ALL=1) at an earlier commit.
+// and 128 (EULERMAP_FAMILIES_ALL=1) at an earlier commit (session 8).
 const Open kOpen[] = {
-    {"chair", "chair_rails", 48, kCut | kFlipped | kLongest},
-    {"chair", "chair_rails", 64, kCut | kFlipped | kLongest},
     {"chair", "chair_rails", 96, kFlipped | kLongest},
     {"chair", "chair_rails", 128, kCut | kFlipped | kLongest},
     {"chair", "chair_slats", 96, kFlipped | kLongest},
     {"chair", "chair_slats", 128, kFlipped | kLongest},
-    {"chair", "table", 48, kCut | kCoverage | kFlipped | kLongest},
-    {"chair", "table", 64, kCut | kCoverage | kFlipped | kLongest},
+    {"chair", "table", 48, kLongest},
     {"chair", "table", 96, kCut | kCoverage | kFlipped | kLongest},
     {"chair", "table", 128, kCut | kCoverage | kFlipped | kLongest},
     {"chair_rails", "chair", 96, kFlipped | kLongest},
     {"chair_rails", "chair", 128, kFlipped | kLongest},
-    {"chair_slats", "chair", 64, kCut | kFlipped | kLongest},  // flipped 0.99%: too near the bound to assert
+    {"chair_slats", "chair", 64, kCut | kLongest},
     {"chair_slats", "chair", 96, kCut | kFlipped | kLongest},
     {"chair_slats", "chair", 128, kCut | kFlipped | kLongest},
     {"ring1", "ring2", 48, kCoverage},
-    {"ring1", "ring2", 64, kCoverage},  // coverage 97.15%: too near the bound to assert
+    {"ring1", "ring2", 64, kCoverage},  // coverage 97.12-97.73%: too near the bound to assert
     {"ring1", "ring2", 96, kFlipped | kLongest},
     {"ring1", "ring2", 128, kCut | kLongest},
     {"ring3", "sphere", 96, kLongest},
     {"ring3", "sphere", 128, kLongest},
-    {"sphere", "ring2", 48, kCoverage | kFlipped | kLongest},
     {"sphere", "ring2", 128, kCut | kCoverage | kFlipped | kLongest},
     {"sphere", "ring3", 48, kCoverage},
     {"sphere", "ring3", 96, kLongest},
     {"sphere", "ring3", 128, kCut | kFlipped | kLongest},
-    {"sphere", "ring4", 48, kCut | kCoverage | kFlipped | kLongest},
+    {"sphere", "ring4", 48, kCoverage},
     {"sphere", "ring4", 64, kCut},
     {"sphere", "ring4", 96, kFlipped | kLongest},
     {"sphere", "ring4", 128, kCut | kLongest},
-    {"table", "chair", 48, kCut | kCoverage | kFlipped | kLongest},
-    {"table", "chair", 64, kCut | kCoverage | kFlipped | kLongest},
     {"table", "chair", 96, kCut | kCoverage | kFlipped | kLongest},
     {"table", "chair", 128, kCut | kCoverage | kFlipped | kLongest},
 };
