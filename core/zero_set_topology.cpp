@@ -144,15 +144,21 @@ struct Labelling {
   int components = 0, cavities = 0;
 };
 
-// in:  X (per node, 1 if in X) on the lattice
+// Nodes visited between two polls of a pass over the grid (about 10 ms of labelling).
+constexpr std::size_t kPollNodes = std::size_t(1) << 18;
+
+// in:  X (per node, 1 if in X) on the lattice, poll (may be empty; may throw to cancel)
 // out: its labelling, by depth-first flood fills: X's components 0, 1, ... and the
-//      cavities 1, 2, ... in the storage order of their first node
-Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside) {
+//      cavities 1, 2, ... in the storage order of their first node; poll called every
+//      kPollNodes nodes visited
+Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside, const std::function<void()> &poll) {
   Labelling l;
   l.label.assign(inside.size(), -1);
   std::vector<std::size_t> stack;
+  std::size_t visited = 0;
   auto fill = [&](bool side, std::uint32_t adjacency, int id) {
     while (!stack.empty()) {
+      if (poll && ++visited % kPollNodes == 0) poll();
       const std::size_t n = stack.back();
       stack.pop_back();
       lattice.ForEach(n, adjacency, [&](std::size_t y) {
@@ -174,13 +180,15 @@ Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside)
   return l;
 }
 
-// in:  X on the lattice
+// in:  X on the lattice, poll (may be empty; called once a plane; may throw to cancel)
 // out: chi(K(X)) = #nodes - #edges + #squares - #cubes, the cells with all corners in X
-int EulerCharacteristic(const Lattice &lattice, const std::vector<std::uint8_t> &inside) {
+int EulerCharacteristic(const Lattice &lattice, const std::vector<std::uint8_t> &inside,
+                        const std::function<void()> &poll) {
   const long dx = lattice.dims[0], dy = lattice.dims[1], dz = lattice.dims[2];
   const long sy = dx, sz = dx * dy;
   long chi = 0;
-  for (long k = 0; k < dz; ++k)
+  for (long k = 0; k < dz; ++k) {
+    if (poll) poll();
     for (long j = 0; j < dy; ++j)
       for (long i = 0; i < dx; ++i) {
         const long n = i + sy * j + sz * k;
@@ -192,6 +200,7 @@ int EulerCharacteristic(const Lattice &lattice, const std::vector<std::uint8_t> 
         const bool xyz = xy && xz && yz && inside[n + 1 + sy + sz];
         chi += 1 - (x + y + z) + (xy + xz + yz) - xyz;
       }
+  }
   return int(chi);
 }
 
@@ -207,11 +216,11 @@ std::vector<std::uint8_t> InsideSet(const ScalarField &f) {
 ZeroSetTopology Measure(const ScalarField &f) {
   const Lattice lattice(f.grid);
   const std::vector<std::uint8_t> inside = InsideSet(f);
-  const Labelling l = Label(lattice, inside);
+  const Labelling l = Label(lattice, inside, {});
   ZeroSetTopology t;
   t.components = l.components;
   t.cavities = l.cavities;
-  t.eulerCharacteristic = EulerCharacteristic(lattice, inside);
+  t.eulerCharacteristic = EulerCharacteristic(lattice, inside, {});
   t.parts.resize(l.components);
   std::vector<Point3> sum(l.components, Point3(0, 0, 0));
   f.grid.ForEachNode([&](int i, int j, int k, std::size_t n) {
@@ -286,7 +295,7 @@ struct Piece {
 } // namespace
 
 struct InsideSetTracker::State {
-  explicit State(const ScalarField &first);
+  State(const ScalarField &first, const std::function<void()> &poll);
 
   // in:  x, a node whose sign changes; where in the step it crosses 0; the step
   // out: x moved to the other side; labels, counts and chi updated; events appended
@@ -316,13 +325,13 @@ struct InsideSetTracker::State {
   int markBase = 0;       // marks below it are from earlier calls of Part
 };
 
-InsideSetTracker::State::State(const ScalarField &first)
+InsideSetTracker::State::State(const ScalarField &first, const std::function<void()> &poll)
     : grid(first.grid), lattice(first.grid), inside(InsideSet(first)), value(first.values), mark(first.values.size(), -1) {
-  Labelling l = Label(lattice, inside);
+  Labelling l = Label(lattice, inside, poll);
   label = std::move(l.label);
   components = l.components;
   complementComponents = 1 + l.cavities;
-  eulerCharacteristic = EulerCharacteristic(lattice, inside);
+  eulerCharacteristic = EulerCharacteristic(lattice, inside, poll);
   insideLabels = UnionFind(components);
   outsideLabels = UnionFind(complementComponents);
 }
@@ -471,7 +480,8 @@ int InsideSetTracker::State::Part(std::size_t x, bool side, const std::vector<Pi
   return int(parts.size());
 }
 
-InsideSetTracker::InsideSetTracker(const ScalarField &first) : state_(std::make_unique<State>(first)) {}
+InsideSetTracker::InsideSetTracker(const ScalarField &first, const std::function<void()> &poll)
+    : state_(std::make_unique<State>(first, poll)) {}
 InsideSetTracker::~InsideSetTracker() = default;
 
 ZeroSetTopology InsideSetTracker::Topology() const {

@@ -60,6 +60,7 @@
 #include "field.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -126,8 +127,9 @@ TopologyChange Difference(const ZeroSetTopology &before, const ZeroSetTopology &
 // ones), not a labelling of the whole grid.
 class InsideSetTracker {
  public:
-  // in: the first frame
-  explicit InsideSetTracker(const ScalarField &first);
+  // in: the first frame; poll (may be empty): called every few milliseconds while the
+  //     first frame is labelled (a pass or two over the grid), may throw to cancel
+  explicit InsideSetTracker(const ScalarField &first, const std::function<void()> &poll = {});
   ~InsideSetTracker();
 
   // in:  the next frame (same grid, else std::invalid_argument), the step's number
