@@ -1,9 +1,11 @@
 #include "threads.h"
 
 #include <omp.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -27,15 +29,18 @@ double OwnSeconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// CPU seconds the machine has spent busy (/proc/stat's "cpu" line, every state but idle and
-// iowait), -1 when unreadable. Niced processes count: each slice they get stops a team at its
-// next barrier (Table 1 row 1 beside three niced compilers: VF 18.3 s on 2 threads, 3.1 s on 1).
+// CPU seconds the machine has spent busy at this process's priority or above (/proc/stat's
+// "cpu" line: user, system and interrupts, and niced time only when this process is niced
+// itself), -1 when unreadable. A niced process yields its core to a thread of ours (CFS
+// weighs nice 10 at a tenth of nice 0), so it takes no core from the team (docs/NOTES.md).
 double MachineBusySeconds() {
   std::ifstream in("/proc/stat");
   std::string cpu;
   unsigned long long user, nice, system, idle, iowait, irq, softirq;
   if (!(in >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq) || cpu != "cpu") return -1;
-  return double(user + nice + system + irq + softirq) / double(sysconf(_SC_CLK_TCK));
+  errno = 0;
+  const bool niced = getpriority(PRIO_PROCESS, 0) > 0 && errno == 0;
+  return double(user + (niced ? nice : 0) + system + irq + softirq) / double(sysconf(_SC_CLK_TCK));
 }
 
 // Tasks runnable now on the machine (/proc/loadavg's fourth field, "running/all"), -1 when unreadable.

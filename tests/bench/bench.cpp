@@ -6,7 +6,8 @@
 //                                                          one of the four Table 1 rows (N = 1..4)
 //   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a grid of CELLS^3 nodes
 //   eulermap_bench load N                                   row N quiet, then beside one CPU-bound process per
-//                                                           core: the wall times and their ratio
+//                                                           core, at nice 0 and at nice 10: the wall times and
+//                                                           their ratios
 //   eulermap_bench vertices S                               sphere of S subdivisions -> ellipsoid, 64 cells
 //   eulermap_bench soup S                                   sphere of S subdivisions -> torus, 64 cells, welded
 //                                                           and as a triangle soup (every face its own vertices)
@@ -21,13 +22,12 @@
 //   eulermap_bench parameters                               the README's parameter list
 //
 // `row` and `grid` print one line of the table (`|`-separated); `map` prints the report.
+#include "tests/support/busy.h"
 #include "tests/support/correspondence.h"
 #include "tests/support/meshes.h"
 
 #include "core/parameters.h"
 
-#include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -181,27 +181,6 @@ template <class Fn> double Wall(Fn &&fn) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// One CPU-bound process per core (children that spin until killed), for the load mode.
-class BusyProcesses {
- public:
-  explicit BusyProcesses(int count) {
-    for (int n = 0; n < count; ++n) {
-      const pid_t pid = fork();
-      if (pid == 0) {
-        volatile unsigned long spin = 0;
-        for (;;) spin = spin + 1;
-      }
-      if (pid > 0) pids_.push_back(pid);
-    }
-  }
-  ~BusyProcesses() {
-    for (pid_t pid : pids_) kill(pid, SIGKILL), waitpid(pid, nullptr, 0);
-  }
-
- private:
-  std::vector<pid_t> pids_;
-};
-
 } // namespace
 
 int main(int argc, char **argv) {
@@ -236,22 +215,25 @@ int main(int argc, char **argv) {
       PrintRow(std::string("Table 1 row ") + argv[2] + (strength != row.deformation ? ", deformation " + std::to_string(strength).substr(0, 4) : ""),
                result.report, row.paperInt + row.paperVf + row.paperDef);
     } else if (mode == "load") {
-      // The same map quiet and beside one busy process per core, with OpenMP's settings as
-      // the environment leaves them (tests/bench/run unsets OMP_WAIT_POLICY): a team larger
-      // than the idle cores waits at its barriers (threads.h).
+      // The same map quiet, beside one busy process per core, and beside as many niced ones
+      // (nice 10, as a background build), with OpenMP's settings as the environment leaves
+      // them (tests/bench/run unsets OMP_WAIT_POLICY): a team larger than the cores left idle
+      // at its priority waits at its barriers (threads.h).
       const int n = std::atoi(argv[2]);
       const int cores = int(sysconf(_SC_NPROCESSORS_ONLN));
       double strength;
       const double quiet = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
-      const int quietThreads = result.report.threads;
-      double busy;
-      {
-        const BusyProcesses load(cores);
-        busy = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
+      std::printf("load: Table 1 row %d, %.2f s quiet (%d threads)\n", n, quiet, result.report.threads);
+      for (const int nice : {0, 10}) {
+        double busy;
+        {
+          const BusyProcesses load(cores, nice);
+          busy = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
+        }
+        std::printf("load: Table 1 row %d, %.2f s beside %d busy processes at nice %d (%d threads at the start): %.2f "
+                    "times quiet\n",
+                    n, busy, cores, nice, result.report.threads, busy / quiet);
       }
-      std::printf("load: Table 1 row %d, %.2f s quiet (%d threads), %.2f s beside %d busy processes (%d threads at the "
-                  "start): %.2f times\n",
-                  n, quiet, quietThreads, busy, cores, result.report.threads, busy / quiet);
     } else if (mode == "grid") {
       // The grid of CELLS^3 nodes over the common box (grid_resolution CELLS would give
       // CELLS + 1 nodes on the longest axis and fewer across).

@@ -1,12 +1,19 @@
 // Thread counts per parallel region (threads.h): a ThreadCount sets the team of this
-// thread's regions only, and a run leaves OpenMP's own setting as it found it.
+// thread's regions only, a run leaves OpenMP's own setting as it found it, and without a
+// count the team is the cores that processes at this one's priority leave idle.
 #include "core/pipeline.h"
 #include "core/threads.h"
+#include "tests/support/busy.h"
 #include "tests/support/meshes.h"
 
 #include <gtest/gtest.h>
 
 #include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+#include <vector>
 
 using namespace eulermap;
 using namespace eulermap::testing;
@@ -37,6 +44,23 @@ TEST(Threads, ZeroLeavesTheCoresOtherProcessesLeaveIdle) {
   EXPECT_EQ(Threads(), IdleCores());
   EXPECT_GE(Threads(), 1);
   EXPECT_LE(Threads(), omp_get_max_threads());
+}
+
+// IdleCores() over a window of 0.4 s (longer than its own, 0.25 s) beside `count` busy processes.
+int IdleBeside(int count, int nice) {
+  const BusyProcesses busy(count, nice);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  IdleCores();  // the window starts here
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  return IdleCores();
+}
+
+// Processes at this one's priority take cores from the team; niced ones yield theirs to it
+// (run alone: RUN_SERIAL in tests/CMakeLists.txt).
+TEST(Threads, IdleCoresCountsOnlyProcessesAtThisPriority) {
+  const int all = omp_get_max_threads(), busy = std::min(all, 2);
+  EXPECT_EQ(IdleBeside(busy, 0), std::max(1, all - busy));
+  EXPECT_EQ(IdleBeside(busy, 19), all);
 }
 
 TEST(Threads, AMapLeavesOpenMPsSettingAsItFoundIt) {
