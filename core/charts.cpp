@@ -1,6 +1,7 @@
 #include "charts.h"
 
 #include "edge_faces.h"
+#include "union_find.h"
 
 namespace eulermap {
 
@@ -51,6 +52,16 @@ TexCoordSeams FindSeams(const Mesh &m, TexCoordKind kind) {
     }
   }
   return seams;
+}
+
+std::vector<int> Charts(const TexCoordSeams &seams) {
+  UnionFind charts(int(seams.across.size()));
+  for (std::size_t f = 0; f < seams.across.size(); ++f)
+    for (int g : seams.across[f])
+      if (g >= 0) charts.Merge(int(f), g);
+  std::vector<int> chart(seams.across.size());
+  for (std::size_t f = 0; f < chart.size(); ++f) chart[f] = charts.Find(int(f));
+  return chart;
 }
 
 } // namespace eulermap

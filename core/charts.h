@@ -31,4 +31,9 @@ struct TexCoordSeams {
 };
 TexCoordSeams FindSeams(const Mesh &m, TexCoordKind kind);
 
+// in:  the seams of a mesh (FindSeams)
+// out: per face, its chart: the same number for the faces joined across edges where the
+//      coordinates continue, another for each other chart
+std::vector<int> Charts(const TexCoordSeams &seams);
+
 } // namespace eulermap

@@ -517,6 +517,12 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
     mapCut();
     untangle();
   }
+  // Where the images cross the target's texture seams, faces narrowed down to half the
+  // target's own edges before the coordinates are pulled (refine_stretched.h, RefineAtSeams).
+  const TexCoordKind targetCoords = options.transferTexture ? DetectTexCoords(m.target) : TexCoordKind::None;
+  if (targetCoords != TexCoordKind::None &&
+      (rep.seamSplit = RefineAtSeams(cut, m.target, targetIndex, Charts(FindSeams(m.target, targetCoords)))) > 0)
+    mapCut();
   vcg::tri::UpdateBounding<Mesh>::Box(mapped);
   vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(mapped);
 
@@ -532,8 +538,9 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
     rep.texture = pull.from == TexCoordKind::None ? "none pulled (the target has no texture coordinates)"
                   : std::string("pulled per wedge from the target's per-") +
                         (pull.from == TexCoordKind::PerWedge ? "wedge" : "vertex") + " coordinates; " +
-                        std::to_string(pull.facesAcrossSeams) +
-                        " faces over a seam took one side's chart";
+                        std::to_string(pull.facesAcrossSeams) + " faces over a seam (" +
+                        Short(100 * pull.areaAcrossSeams) + "% of the mapped area) took one side's chart, after " +
+                        std::to_string(rep.seamSplit) + " vertices were added along the seams";
     rep.texCoordsPulled = pull.from != TexCoordKind::None;
   }
   if (options.transferColour || options.transferQuality)

@@ -105,6 +105,15 @@ double LongestEdge(const Mesh &m) {
   return longest;
 }
 
+double MeanEdgeLength(const Mesh &m) {
+  double sum = 0;
+  long edges = 0;
+  for (const Face &f : m.face)
+    if (!f.IsD())
+      for (int e = 0; e < 3; ++e) sum += vcg::Distance(f.cP(e), f.cP((e + 1) % 3)), ++edges;
+  return edges > 0 ? sum / edges : 0;
+}
+
 double StoreDistortion(Mesh &cut, const Mesh &mapped) {
   std::vector<double> areaSource(cut.vert.size(), 0), areaMapped(cut.vert.size(), 0);
   double totalSource = 0, totalMapped = 0;

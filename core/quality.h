@@ -24,8 +24,9 @@ double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<Uncove
 // target face nearest to their centroid.
 double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target);
 
-// Longest edge of m.
+// Longest edge of m, and the mean length of its faces' edges (an edge between two faces counted twice).
 double LongestEdge(const Mesh &m);
+double MeanEdgeLength(const Mesh &m);
 
 // Per-vertex area distortion |log2(A_mapped / A_source)|, A the area of the faces around
 // the vertex and the ratio normalised by the total areas, written to the vertices'

@@ -1,11 +1,16 @@
 #include "refine_stretched.h"
 
 #include "edge_faces.h"
+#include "quality.h"
 #include "topology.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/update/topology.h>
+
+#include <array>
+#include <utility>
+#include <vector>
 
 namespace eulermap {
 
@@ -24,19 +29,30 @@ bool GapAt(const Point3 &a, const Point3 &b, const ClosestHit &atMid) {
          ((a + b) / 2 - atMid.point) * atMid.face->cN() > 0;
 }
 
-// Which edges are split: mapped longer than the limit, along the target (see the header).
-struct Stretched {
+// Whether the chord between images a and b follows the target (see the header): it crosses
+// no gap, and the target does not face opposite ways at its ends and its midpoint's nearest
+// point. Where it does, atA and atB are the target's points nearest to a and b.
+bool FollowsTarget(const Point3 &a, const Point3 &b, const ClosestPoint &target, ClosestHit &atA, ClosestHit &atB) {
+  atA = target.Query(a), atB = target.Query(b);
+  const ClosestHit atMid = target.Query((a + b) / 2);
+  if (!atA.face || !atB.face || !atMid.face || GapAt(a, b, atMid)) return false;
+  const Point3 &na = atA.face->cN(), &nb = atB.face->cN(), &nm = atMid.face->cN();
+  return na * nb > kOppositeCosine && nm * na > kOppositeCosine && nm * nb > kOppositeCosine;
+}
+
+// RefineE's predicate: pick(a, b) on the images of the edge's ends, for edges whose ends
+// both lie off the faces set aside (see RefineChosen).
+template <class Pick> struct Picked {
+  Mesh &mesh;
   Handle &image;  // vcglib's handles read through a non-const operator[]
-  const ClosestPoint &target;
-  double limit;
+  const std::vector<char> &asideVertex;  // per vertex of the mesh before the passes
+  const Pick &pick;
+  bool Aside(const Vertex *v) const {
+    const std::size_t n = vcg::tri::Index(mesh, v);
+    return n < asideVertex.size() && asideVertex[n];
+  }
   bool operator()(const Pos &ep) const {
-    const Point3 &a = image[ep.V()], &b = image[ep.VFlip()];
-    const double length = vcg::Distance(a, b);
-    if (length <= limit) return false;
-    const ClosestHit atA = target.Query(a), atB = target.Query(b), atMid = target.Query((a + b) / 2);
-    if (!atA.face || !atB.face || !atMid.face || GapAt(a, b, atMid)) return false;
-    const Point3 &na = atA.face->cN(), &nb = atB.face->cN(), &nm = atMid.face->cN();
-    return na * nb > kOppositeCosine && nm * na > kOppositeCosine && nm * nb > kOppositeCosine;
+    return !Aside(ep.V()) && !Aside(ep.VFlip()) && pick(image[ep.V()], image[ep.VFlip()]);
   }
 };
 
@@ -54,26 +70,66 @@ struct SplitPoint {
   template <class T> T WedgeInterp(T &a, T &b) { return source.WedgeInterp(a, b); }
 };
 
-} // namespace
-
-int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit) {
-  // RefineE walks manifold edges. (vcglib 2020.09's CountNonManifoldEdgeFF takes a face
-  // bit flag it never gives back: called once per map it runs out of bits.)
+// Splits at their midpoints, pass after pass, the edges pick(a, b) chooses (a, b: the images
+// of their ends), until none is chosen, `passes` have run or cut has doubled its vertices.
+// Returns the number of vertices added.
+template <class Pick> int RefineChosen(Mesh &cut, const ClosestPoint &target, int passes, const Pick &pick) {
+  // RefineE walks manifold edges: the faces around an edge of more than two are set aside
+  // (deleted while it runs), and no edge with an end on them is split, so they stay whole.
+  // (vcglib 2020.09's CountNonManifoldEdgeFF takes a face bit flag it never gives back:
+  // called once per map it runs out of bits.)
   const EdgeFaces edges(cut);
-  for (const Face &f : cut.face)
+  std::vector<std::pair<std::size_t, std::array<std::size_t, 3>>> aside;  // face, its vertices
+  std::vector<char> asideVertex(cut.vert.size(), 0);
+  for (const Face &f : cut.face) {
+    if (f.IsD()) continue;
+    bool nonManifold = false;
     for (int e = 0; e < 3; ++e)
-      if (edges.Around(int(vcg::tri::Index(cut, f.cV(e))), int(vcg::tri::Index(cut, f.cV((e + 1) % 3)))).size() > 2)
-        return 0;
+      nonManifold = nonManifold ||
+                    edges.Around(int(vcg::tri::Index(cut, f.cV(e))), int(vcg::tri::Index(cut, f.cV((e + 1) % 3)))).size() > 2;
+    if (!nonManifold) continue;
+    std::array<std::size_t, 3> v;
+    for (int c = 0; c < 3; ++c) asideVertex[v[c] = vcg::tri::Index(cut, f.cV(c))] = 1;
+    aside.push_back({vcg::tri::Index(cut, f), v});
+  }
+  for (const auto &[f, v] : aside) vcg::tri::Allocator<Mesh>::DeleteFace(cut, cut.face[f]);
   vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);
   Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   const int before = cut.vn;
-  // Each pass halves the stretched edges; the budget stops a tear that the guard lets by.
-  for (int pass = 0; pass < 8 && cut.vn < 2 * before; ++pass) {
-    Stretched stretched{image, target, limit};
+  for (int pass = 0; pass < passes && cut.vn < 2 * before; ++pass) {
+    Picked<Pick> picked{cut, image, asideVertex, pick};
     SplitPoint split{cut, image, target};
-    if (!vcg::tri::RefineE(cut, split, stretched)) break;  // (RefineE updates FF adjacency)
+    if (!vcg::tri::RefineE(cut, split, picked)) break;  // (RefineE updates FF adjacency)
   }
+  // Back with their corners (vcglib moves no pointer of a deleted face when its vectors grow).
+  for (const auto &[f, v] : aside) {
+    Face &face = cut.face[f];
+    for (int c = 0; c < 3; ++c) face.V(c) = &cut.vert[v[c]];
+    face.ClearD();
+    ++cut.fn;
+  }
+  if (!aside.empty()) vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);
   return cut.vn - before;
+}
+
+} // namespace
+
+int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit) {
+  // Each pass halves the stretched edges; the budget stops a tear that the guard lets by.
+  return RefineChosen(cut, target, 8, [&](const Point3 &a, const Point3 &b) {
+    ClosestHit atA, atB;
+    return vcg::Distance(a, b) > limit && FollowsTarget(a, b, target, atA, atB);
+  });
+}
+
+int RefineAtSeams(Mesh &cut, const Mesh &target, const ClosestPoint &index, const std::vector<int> &chart) {
+  const Face *first = &target.face[0];
+  const double limit = kSeamEdgeShare * MeanEdgeLength(target);
+  return RefineChosen(cut, index, kSeamPasses, [&](const Point3 &a, const Point3 &b) {
+    ClosestHit atA, atB;
+    return vcg::Distance(a, b) > limit && FollowsTarget(a, b, index, atA, atB) &&
+           chart[atA.face - first] != chart[atB.face - first];
+  });
 }
 
 bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target) {

@@ -1,6 +1,6 @@
-// eulermap::RefineStretched and OpenTears — the mapped source refined where the map stretches
-// an edge along the target, and opened where it tears across a gap beside a cut (ours, not
-// the paper's).
+// eulermap::RefineStretched, RefineAtSeams and OpenTears — the mapped source refined where the
+// map stretches an edge along the target or crosses a seam of its texture, and opened where it
+// tears across a gap beside a cut (ours, not the paper's).
 //
 // Surgery splits the tracked edges that stretch while the points move (surgery.h, step 4);
 // untangling (untangle.h) then spreads folded places over the target once the points have
@@ -25,6 +25,8 @@
 
 #include "closest.h"
 
+#include <vector>
+
 namespace eulermap {
 
 constexpr double kSplitCells = 2;  // an edge longer than this many grid cells on the target is split
@@ -36,6 +38,21 @@ constexpr double kSplitCells = 2;  // an edge longer than this many grid cells o
 constexpr double kGapSag = 0.4;
 
 int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit);
+
+// The cut refined along the target's texture seams (charts.h), before its texture coordinates
+// are pulled (transfer.h): a face whose images lie in two charts takes one chart's
+// coordinates over its whole extent, continued past the chart's border into whatever the
+// texture holds there, so along a seam the texture shows a saw-tooth as large as the cut's
+// faces. Each pass splits, as RefineStretched does, every edge mapped longer than
+// kSeamEdgeShare of the target's mean edge length whose chord follows the target and whose
+// ends' images lie in different charts; each of the kSeamPasses passes halves the faces
+// over a seam, down to that length.
+//   in/out: cut (as for RefineStretched)
+//   in:     target and its index, chart: per face of target its chart (Charts)
+//   returns the number of vertices added (at most one per vertex of cut)
+constexpr int kSeamPasses = 4;
+constexpr double kSeamEdgeShare = 0.5;
+int RefineAtSeams(Mesh &cut, const Mesh &target, const ClosestPoint &index, const std::vector<int> &chart);
 
 // Whether the chord between images a and b crosses a gap: its midpoint lies outside the
 // target (on the side its nearest face's normal points to), more than kGapSag of the

@@ -128,6 +128,7 @@ struct Report {
   std::vector<EventSurgery> surgery;            // one per topology event, in the same order
   int untangledVertices = 0;  // vertices moved by untangle.h (summed over its two runs: pipeline.cpp)
   int stretchedSplit = 0;     // vertices added where the untangled map stretched edges (refine_stretched.h)
+  int seamSplit = 0;          // vertices added where the images cross the target's texture seams (RefineAtSeams)
   int tearsOpened = 0;        // faces removed where the map tore beside a rim (refine_stretched.h)
   std::string texture;        // what the cut's texture coordinates are (transfer.h); empty: not asked
   bool texCoordsPulled = false;

@@ -44,7 +44,8 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
   auto index = [&](const Face *f) { return int(f - &target.face[0]); };
 
   int across = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : across) num_threads(Threads())
+  double areaAcross = 0, area = 0;
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : across, areaAcross, area) num_threads(Threads())
   for (long n = 0; n < long(cut.face.size()); ++n) {
     Face &f = cut.face[n];
     if (f.IsD()) continue;
@@ -78,7 +79,9 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
       }
       if (count > held || (count == held && distance < outside)) chart.swap(candidate), held = count, outside = distance;
     }
-    across += held < 3;
+    const double imageArea = vcg::DoubleArea(vcg::Triangle3<double>(hit[0]->point, hit[1]->point, hit[2]->point)) / 2;
+    area += imageArea;
+    if (held < 3) ++across, areaAcross += imageArea;
 
     for (int c = 0; c < 3; ++c) {
       if (std::find(chart.begin(), chart.end(), index(hit[c]->face)) != chart.end()) {
@@ -96,6 +99,7 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
     }
   }
   pull.facesAcrossSeams = across;
+  pull.areaAcrossSeams = area > 0 ? areaAcross / area : 0;
   cut.textures = target.textures;
   return pull;
 }

@@ -15,6 +15,7 @@ namespace eulermap {
 struct TexCoordPull {
   TexCoordKind from = TexCoordKind::None;  // the target's coordinates (None: nothing pulled)
   int facesAcrossSeams = 0;  // faces of the cut whose images lie on both sides of a seam
+  double areaAcrossSeams = 0;  // their share of the images' area (the chords' triangles)
 };
 
 // in:  cut; hits[v], the image of cut's vertex v on `target` (a query of a ClosestPoint
