@@ -2,10 +2,12 @@
 // hear Cancel on big grids (OpenVDB's interrupter): between bounded pieces of work they
 // ask Stop(), and stop when it says so.
 //
-// The pieces: a conjugate-gradient iteration of the velocity solve with its multigrid
-// V-cycle (velocity.h), and kNodesBetweenPolls nodes of a distance-transform sweep
-// (distance_transform.h), of each pass that finds an inside set (sdf.h), of a warped morph
-// frame (morph.h) and of a velocity system's assembly; also once a solver's arrays are
+// The pieces: a conjugate-gradient iteration of the velocity solve, and its multigrid
+// V-cycle's smoothing, restriction and coarse levels (velocity.h, multigrid.h), and
+// kNodesBetweenPolls nodes of a distance-transform sweep (distance_transform.h), of each
+// pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
+// system's assembly and of the labelling of the morph's first inside set
+// (zero_set_topology.h); also once a solver's arrays are
 // allocated and once a system is assembled. The pipeline reports its stages between them
 // (pipeline.h).
 //

@@ -303,7 +303,10 @@ void BlockMultigrid::Residual(Level &l) {
   });
 }
 
-void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane) {
+void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane, const Interrupt *interrupt) {
+  auto poll = [interrupt] {
+    if (interrupt) interrupt->Stop();
+  };
   Level &l = levels_[n];
   if (n + 1 == levels_.size()) {  // coarsest
     for (int s = 0; s < kCoarsestSweeps; ++s) Sweep(l, 0, s == 0), Sweep(l, 1, false);
@@ -315,10 +318,13 @@ void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane) {
   }
   const int sweeps = n == 0 ? 1 : kCoarseSweeps;
   for (int s = 0; s < sweeps; ++s) Sweep(l, 0, s == 0), Sweep(l, 1, false);
+  poll();
   Residual(l);
   Level &c = levels_[n + 1];
   FullWeighting<true>(l.layout, l.r, c.layout, c.ownB);  // the residual is 0 at black nodes
+  poll();
   Cycle(n + 1);
+  poll();
   ProlongAdd(c, l);
   for (int s = 0; s < sweeps; ++s) {
     const bool last = s + 1 == sweeps;  // each colour's last sweep
@@ -326,11 +332,12 @@ void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane) {
   }
 }
 
-double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z) {
+double BlockMultigrid::Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z, const Interrupt &interrupt) {
+  interrupt.Stop();
   Level &fine = levels_.front();
   fine.b = &r, fine.x = &z;  // read and written in place
   std::vector<double> plane(fine.dims[2], 0.0);  // r . z by plane, summed in order (as velocity.cpp's Apply)
-  Cycle(0, &plane);
+  Cycle(0, &plane, &interrupt);
   return std::accumulate(plane.begin(), plane.end(), 0.0);
 }
 

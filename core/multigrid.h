@@ -67,11 +67,13 @@ class BlockMultigrid {
   //      invert g g^T + shift I by the Sherman-Morrison formula, from g and shift.
   void Update(const RedBlackArrays<3> &g, const RedBlackArrays<1> &shift, const RedBlackArrays<1> *beta = nullptr);
 
-  // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0)
+  // in:  r on the finest grid, in RedBlackLayout(Dims()) (ghosts 0); interrupt, asked before
+  //      the cycle and between the finest level's pieces (smoothing, restriction, the coarse
+  //      levels: each a pass or more over the grid), its answer left to the caller
   // out: z = M^-1 r, one V-cycle from z = 0, in the same layout (ghosts 0: never written;
   //      z is the finest level's iterate, so it must not be r); returns r . z
   //      (summed by plane, in order: the same bits for any number of threads)
-  double Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z);
+  double Precondition(const RedBlackArrays<3> &r, RedBlackArrays<3> &z, const Interrupt &interrupt = Interrupt());
 
   int Levels() const { return int(levels_.size()); }
 
@@ -100,8 +102,9 @@ class BlockMultigrid {
   void Sweep(Level &l, int c, bool fromZero, std::vector<double> *plane = nullptr);
   void Residual(Level &l);                            // l.r = l.b - A l.x at red nodes
   void ProlongAdd(Level &coarse, Level &fine);  // fine.x += P coarse.x at red nodes
-  // plane (when given): b . x of the level's last sweeps, by plane.
-  void Cycle(std::size_t level, std::vector<double> *plane = nullptr);
+  // plane (when given): b . x of the level's last sweeps, by plane; interrupt (when given)
+  // asked between the level's pieces.
+  void Cycle(std::size_t level, std::vector<double> *plane = nullptr, const Interrupt *interrupt = nullptr);
 
   std::vector<Level> levels_;
   // The finest level's system (Update).

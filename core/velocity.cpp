@@ -147,7 +147,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
     s = SolveConjugateGradient(x_, bNorm, [this](const Vectors &r, Vectors &z) { return BlockJacobi(r, z); }, interrupt);
   } else {
     // A poll before each V-cycle too: an iteration is two halves of about equal work.
-    s = SolveConjugateGradient(x_, bNorm, [&](const Vectors &r, Vectors &z) { return interrupt.Stop(), multigrid_->Precondition(r, z); },
+    s = SolveConjugateGradient(x_, bNorm, [&](const Vectors &r, Vectors &z) { return multigrid_->Precondition(r, z, interrupt); },
                                interrupt);
   }
   interrupt.Stop();  // the solve's last iteration

@@ -1,5 +1,6 @@
 #include "zero_set_topology.h"
 
+#include "interrupt.h"
 #include "union_find.h"
 
 #include <algorithm>
@@ -144,13 +145,10 @@ struct Labelling {
   int components = 0, cavities = 0;
 };
 
-// Nodes visited between two polls of a pass over the grid (about 10 ms of labelling).
-constexpr std::size_t kPollNodes = std::size_t(1) << 18;
-
 // in:  X (per node, 1 if in X) on the lattice, poll (may be empty; may throw to cancel)
 // out: its labelling, by depth-first flood fills: X's components 0, 1, ... and the
 //      cavities 1, 2, ... in the storage order of their first node; poll called every
-//      kPollNodes nodes visited
+//      kNodesBetweenPolls nodes visited (interrupt.h)
 Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside, const std::function<void()> &poll) {
   Labelling l;
   l.label.assign(inside.size(), -1);
@@ -158,7 +156,7 @@ Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside,
   std::size_t visited = 0;
   auto fill = [&](bool side, std::uint32_t adjacency, int id) {
     while (!stack.empty()) {
-      if (poll && ++visited % kPollNodes == 0) poll();
+      if (poll && ++visited % kNodesBetweenPolls == 0) poll();
       const std::size_t n = stack.back();
       stack.pop_back();
       lattice.ForEach(n, adjacency, [&](std::size_t y) {
