@@ -86,7 +86,6 @@ const Open kOpen[] = {
     {"sphere", "ring3", 96, kLongest},
     {"sphere", "ring3", 128, kCut | kFlipped | kLongest},
     {"sphere", "ring4", 48, kCoverage},
-    {"sphere", "ring4", 64, kCut},
     {"sphere", "ring4", 96, kFlipped | kLongest},
     {"sphere", "ring4", 128, kCut | kLongest},
     {"table", "chair", 96, kCut | kCoverage | kFlipped | kLongest},
