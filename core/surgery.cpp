@@ -310,22 +310,24 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
     return cut;
   }
   // A neck pinches across the plane normal to the axis: the loop of faces crossing it
-  // around x, from the nearest such face along faces that share a crossing edge.
+  // around x, from the nearest such face along faces that share a crossing edge, however
+  // far the loop reaches. The tracked surface lags the level set, and the lining of a slot
+  // that zips shut (chair_slats -> chair: from the seat up to the event under the top rail)
+  // is squeezed into the plane along the slot's whole length: a loop cut short at some
+  // distance from x leaves a strip, a hole with one rim where a band has two.
   auto side = [&](int p) { return (position[p] - o) * d >= 0; };
   auto crosses = [&](const Tri &t) { return side(t.v[0]) != side(t.v[1]) || side(t.v[1]) != side(t.v[2]); };
   int seed = -1;
   double nearest = reach;
-  EdgeFaces faces;  // crossing faces near x, by edge
+  EdgeFaces faces;  // crossing faces, by edge
   for (int n = 0; n < int(tris_.size()); ++n) {
     const Tri &t = tris_[n];
     if (t.state != kAlive || !crosses(t)) continue;
-    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
-    if (FarFromBox(o, 2 * reach, a, b, c)) continue;
-    const double dist = DistanceToTriangle(o, a, b, c);
-    if (dist > 2 * reach) continue;
-    if (dist < nearest) nearest = dist, seed = n;
     for (int e = 0; e < 3; ++e)
       if (side(t.v[e]) != side(t.v[(e + 1) % 3])) faces.Add(t.v[e], t.v[(e + 1) % 3], n);
+    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+    if (FarFromBox(o, nearest, a, b, c)) continue;
+    if (const double dist = DistanceToTriangle(o, a, b, c); dist < nearest) nearest = dist, seed = n;
   }
   if (seed < 0) return cut;
   return ConnectedFrom(seed, faces);

@@ -29,7 +29,8 @@
 //          kReachCells + hole radius), with the faces within the radius of that point
 //          joined to it through faces within the radius (one disc of that sheet, not of
 //          another layer of the tracked surface that passes by);
-//          Band: the loop of faces crossing the plane through x normal to d around the neck;
+//          Band: the loop of faces crossing the plane through x normal to d around the neck,
+//          all of it, however far it reaches (a band cut short is a strip: one loop, not two);
 //   3. clean: the rim left must be a manifold boundary and look deliberate:
 //        - ears: a face with two or more edges on a rim goes (no dangling faces);
 //        - non-manifold vertices: where the faces around a vertex form two or more fans,

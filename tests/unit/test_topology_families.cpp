@@ -72,7 +72,6 @@ const Open kOpen[] = {
     {"chair", "table", 128, kCut | kCoverage | kFlipped | kLongest},
     {"chair_rails", "chair", 96, kFlipped | kLongest},
     {"chair_rails", "chair", 128, kFlipped | kLongest},
-    {"chair_slats", "chair", 64, kCut | kLongest},
     {"chair_slats", "chair", 96, kCut | kFlipped | kLongest},
     {"chair_slats", "chair", 128, kCut | kFlipped | kLongest},
     {"ring1", "ring2", 48, kCoverage},
