@@ -497,14 +497,14 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   mapCut();
   const ClosestPoint targetIndex(m.target);
   const double splitLength = kSplitCells * grid.h / m.place.scale;  // refine_stretched.h, target units
-  // Where a hole opened wider than surgery cut it, the faces left across it go (where
-  // surgery cuts; a map that cuts nothing keeps the source's faces).
   // The two rims of each disc pair go onto one curve (glue_rims.h), as a continuous map needs.
   std::vector<Point3> discPairs;
   for (const EventSurgery &s : rep.surgery)
     if (s.outcome == EventCut::Cut && ShapeOf(rep.topologyEvents[s.event].kind) == CutShape::Discs)
       discPairs.push_back(back.Apply(rep.topologyEvents[s.event].position));
   if ((rep.rimsGlued = GlueRims(cut, targetIndex, discPairs, kGlueReachCells * grid.h / m.place.scale)) > 0) mapCut();
+  // Where a hole opened wider than surgery cut it, the faces left across it go (where
+  // surgery cuts; a map that cuts nothing keeps the source's faces).
   if (surgery.SplitsStretched() && (rep.tearsOpened = OpenTears(cut, targetIndex, splitLength)) > 0) mapCut();
   rep.quality.flippedBeforeUntangling = FlippedAreaShare(mapped, targetIndex);
   stage(0.93, "untangling the map");
