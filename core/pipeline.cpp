@@ -1,6 +1,8 @@
 #include "pipeline.h"
 
 #include "closest.h"
+#include "cut_axis.h"
+#include "glue_rims.h"
 #include "grid.h"
 #include "hermite_field.h"
 #include "input.h"
@@ -83,6 +85,7 @@ constexpr double kFoldedShare = 0.01;  // flipped area after untangling above it
 constexpr int kRefineRounds = 3;  // untangle-refine rounds after the first untangling
 constexpr double kStretchedShare = 0.05;  // a mapped edge longer than this share of the target's diagonal
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
+constexpr double kGlueReachCells = 6;  // a disc pair's rims end within this many cells of its place (glue_rims.h)
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
 
 std::string Short(double x) {
@@ -494,6 +497,12 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   mapCut();
   const ClosestPoint targetIndex(m.target);
   const double splitLength = kSplitCells * grid.h / m.place.scale;  // refine_stretched.h, target units
+  // The two rims of each disc pair go onto one curve (glue_rims.h), as a continuous map needs.
+  std::vector<Point3> discPairs;
+  for (const EventSurgery &s : rep.surgery)
+    if (s.outcome == EventCut::Cut && ShapeOf(rep.topologyEvents[s.event].kind) == CutShape::Discs)
+      discPairs.push_back(back.Apply(rep.topologyEvents[s.event].position));
+  if ((rep.rimsGlued = GlueRims(cut, targetIndex, discPairs, kGlueReachCells * grid.h / m.place.scale)) > 0) mapCut();
   // Where a hole opened wider than surgery cut it, the faces left across it go (where
   // surgery cuts; a map that cuts nothing keeps the source's faces).
   if (surgery.SplitsStretched() && (rep.tearsOpened = OpenTears(cut, targetIndex, splitLength)) > 0) mapCut();

@@ -206,8 +206,8 @@ std::string Report::ToText() const {
     o << "\n";
   }
   o << Format("untangling: flipped area %.2f%% as tracked, %d vertices relaxed on the target, %d added where edges "
-              "stretched, %d faces removed where the map tore beside a cut\n",
-              100 * quality.flippedBeforeUntangling, untangledVertices, stretchedSplit, tearsOpened);
+              "stretched, %d faces removed where the map tore beside a cut, %d disc pairs' rims glued\n",
+              100 * quality.flippedBeforeUntangling, untangledVertices, stretchedSplit, tearsOpened, rimsGlued);
   if (!texture.empty()) o << Format("texture: %s\n", texture.c_str());
   if (peakMemoryKiB > 0) o << Format("peak memory: %.1f MiB\n", peakMemoryKiB / 1024.0);
   for (const std::string &w : warnings) o << "warning: " << w << "\n";

@@ -130,6 +130,7 @@ struct Report {
   int stretchedSplit = 0;     // vertices added where the untangled map stretched edges (refine_stretched.h)
   int seamSplit = 0;          // vertices added where the images cross the target's texture seams (RefineAtSeams)
   int tearsOpened = 0;        // faces removed where the map tore beside a rim (refine_stretched.h)
+  int rimsGlued = 0;          // disc pairs whose two rims were brought onto one curve (glue_rims.h)
   std::string texture;        // what the cut's texture coordinates are (transfer.h); empty: not asked
   bool texCoordsPulled = false;
   int cutVertices = 0, cutFaces = 0;

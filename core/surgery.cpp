@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace eulermap {
 
@@ -263,7 +264,12 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
     // chair -> chair_rails growing from a leg at 64 cells lies 0.37 cells from x, and the
     // line first meets the surface 17 cells away) the face within kSheetConeDegrees of the
     // axis whose point nearest to x is nearest over the cosine of its angle to the axis;
-    // and the faces within the sphere's radius of that point.
+    // and the faces within the sphere's radius of that point that are joined to that face
+    // through faces within the radius: one disc of this sheet. Another layer of the tracked
+    // surface passing within the radius (a fold, or the sheet curving back) is not the
+    // sheet meeting the other here, and a disc cut from it opens a hole that no event
+    // calls for (a fold beside the cap growing round an outer torus of sphere -> ring4 at
+    // 64 cells).
     const double cone = std::cos(kSheetConeDegrees * M_PI / 180);
     for (double side : {1.0, -1.0}) {
       int hit = -1;
@@ -291,47 +297,56 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
         *bothSheets = false;
         continue;
       }
+      EdgeFaces near;  // the faces within the radius of q, by edge
       for (int n = 0; n < int(tris_.size()); ++n) {
         const Tri &t = tris_[n];
         if (t.state != kAlive) continue;
         const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
-        if (n == hit || (!FarFromBox(q, radius_, a, b, c) && DistanceToTriangle(q, a, b, c) <= radius_)) cut.push_back(n);
+        if (n == hit || (!FarFromBox(q, radius_, a, b, c) && DistanceToTriangle(q, a, b, c) <= radius_))
+          for (int e = 0; e < 3; ++e) near.Add(t.v[e], t.v[(e + 1) % 3], n);
       }
+      for (int n : ConnectedFrom(hit, near)) cut.push_back(n);
     }
     return cut;
   }
   // A neck pinches across the plane normal to the axis: the loop of faces crossing it
-  // around x, from the nearest such face along faces that share a crossing edge.
+  // around x, from the nearest such face along faces that share a crossing edge, however
+  // far the loop reaches. The tracked surface lags the level set, and the lining of a slot
+  // that zips shut (chair_slats -> chair: from the seat up to the event under the top rail)
+  // is squeezed into the plane along the slot's whole length: a loop cut short at some
+  // distance from x leaves a strip, a hole with one rim where a band has two.
   auto side = [&](int p) { return (position[p] - o) * d >= 0; };
   auto crosses = [&](const Tri &t) { return side(t.v[0]) != side(t.v[1]) || side(t.v[1]) != side(t.v[2]); };
   int seed = -1;
   double nearest = reach;
-  EdgeFaces faces;  // crossing faces near x, by edge
+  EdgeFaces faces;  // crossing faces, by edge
   for (int n = 0; n < int(tris_.size()); ++n) {
     const Tri &t = tris_[n];
     if (t.state != kAlive || !crosses(t)) continue;
-    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
-    if (FarFromBox(o, 2 * reach, a, b, c)) continue;
-    const double dist = DistanceToTriangle(o, a, b, c);
-    if (dist > 2 * reach) continue;
-    if (dist < nearest) nearest = dist, seed = n;
     for (int e = 0; e < 3; ++e)
       if (side(t.v[e]) != side(t.v[(e + 1) % 3])) faces.Add(t.v[e], t.v[(e + 1) % 3], n);
+    const Point3 &a = position[t.v[0]], &b = position[t.v[1]], &c = position[t.v[2]];
+    if (FarFromBox(o, nearest, a, b, c)) continue;
+    if (const double dist = DistanceToTriangle(o, a, b, c); dist < nearest) nearest = dist, seed = n;
   }
   if (seed < 0) return cut;
-  std::vector<char> seen(tris_.size(), 0);
+  return ConnectedFrom(seed, faces);
+}
+
+std::vector<int> Surgery::ConnectedFrom(int seed, const EdgeFaces &faces) const {
+  std::vector<int> piece;
+  std::unordered_set<int> seen = {seed};
   std::vector<int> stack = {seed};
-  seen[seed] = 1;
   while (!stack.empty()) {
     const int n = stack.back();
     stack.pop_back();
-    cut.push_back(n);
+    piece.push_back(n);
     const Tri &t = tris_[n];
     for (int e = 0; e < 3; ++e)
       for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3]))
-        if (!seen[m]) seen[m] = 1, stack.push_back(m);
+        if (seen.insert(m).second) stack.push_back(m);
   }
-  return cut;
+  return piece;
 }
 
 void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::pair<int, Point3>> &cutting) {

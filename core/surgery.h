@@ -26,8 +26,11 @@
 //          point V vanishes, so the tracked sheets part before they reach x and may never
 //          meet the sphere. Discs: on each side, the nearest face the line (x, d) pierces, else
 //          (a sheet meeting it at a tip) the nearest within 60 degrees of d (within
-//          kReachCells + hole radius), with those within the radius of that point;
-//          Band: the loop of faces crossing the plane through x normal to d around the neck;
+//          kReachCells + hole radius), with the faces within the radius of that point
+//          joined to it through faces within the radius (one disc of that sheet, not of
+//          another layer of the tracked surface that passes by);
+//          Band: the loop of faces crossing the plane through x normal to d around the neck,
+//          all of it, however far it reaches (a band cut short is a strip: one loop, not two);
 //   3. clean: the rim left must be a manifold boundary and look deliberate:
 //        - ears: a face with two or more edges on a rim goes (no dangling faces);
 //        - non-manifold vertices: where the faces around a vertex form two or more fans,
@@ -132,6 +135,8 @@ class Surgery {
   // bothSheets: set false when a side has no tracked face (Discs).
   std::vector<int> Crossing(const Point3 &x, const Point3 &axis, CutShape shape, const std::vector<Point3> &position,
                             bool *bothSheets) const;
+  // The faces joined to seed through edges that `faces` holds (seed among them).
+  std::vector<int> ConnectedFrom(int seed, const EdgeFaces &faces) const;
   // cutting: the outcomes (events) that cut at this step, with their positions
   void Clean(const std::vector<Point3> &position, const std::vector<std::pair<int, Point3>> &cutting);
   // position: every point's tracked position, extended with the points added
