@@ -84,17 +84,21 @@ double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<Uncove
 
 double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target) {
   vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(mapped);
-  double flipped = 0, total = 0;
-#pragma omp parallel for reduction(+ : flipped, total) schedule(static) num_threads(Threads())
+  // Per face, its area and whether it is flipped, then summed in face order: the same bits
+  // for any number of threads (an OpenMP reduction adds in an order that depends on it).
+  std::vector<double> area(mapped.face.size(), 0.0);
+  std::vector<char> flipped(mapped.face.size(), 0);
+#pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(mapped.face.size()); ++n) {
     const Face &f = mapped.face[n];
     if (f.IsD()) continue;
-    const double area = vcg::DoubleArea(f) / 2;
+    area[n] = vcg::DoubleArea(f) / 2;
     const ClosestHit hit = target.Query(vcg::Barycenter(f));
-    total += area;
-    if (hit.face && f.cN() * hit.face->cN() < 0) flipped += area;
+    flipped[n] = hit.face && f.cN() * hit.face->cN() < 0;
   }
-  return total > 0 ? flipped / total : 0;
+  double flippedArea = 0, total = 0;
+  for (std::size_t n = 0; n < area.size(); ++n) total += area[n], flippedArea += flipped[n] ? area[n] : 0;
+  return total > 0 ? flippedArea / total : 0;
 }
 
 double LongestEdge(const Mesh &m) {

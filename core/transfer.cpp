@@ -43,9 +43,9 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
   const TexCoordSeams seams = FindSeams(target, pull.from);
   auto index = [&](const Face *f) { return int(f - &target.face[0]); };
 
-  int across = 0;
-  double areaAcross = 0, area = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : across, areaAcross, area) num_threads(Threads())
+  std::vector<double> imageArea(cut.face.size(), 0.0);  // per face (summed in order below: any thread count)
+  std::vector<char> acrossSeam(cut.face.size(), 0);
+#pragma omp parallel for schedule(dynamic, 64) num_threads(Threads())
   for (long n = 0; n < long(cut.face.size()); ++n) {
     Face &f = cut.face[n];
     if (f.IsD()) continue;
@@ -79,9 +79,8 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
       }
       if (count > held || (count == held && distance < outside)) chart.swap(candidate), held = count, outside = distance;
     }
-    const double imageArea = vcg::DoubleArea(vcg::Triangle3<double>(hit[0]->point, hit[1]->point, hit[2]->point)) / 2;
-    area += imageArea;
-    if (held < 3) ++across, areaAcross += imageArea;
+    imageArea[n] = vcg::DoubleArea(vcg::Triangle3<double>(hit[0]->point, hit[1]->point, hit[2]->point)) / 2;
+    acrossSeam[n] = held < 3;
 
     for (int c = 0; c < 3; ++c) {
       if (std::find(chart.begin(), chart.end(), index(hit[c]->face)) != chart.end()) {
@@ -98,7 +97,9 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<Clos
                             pull.from);
     }
   }
-  pull.facesAcrossSeams = across;
+  double area = 0, areaAcross = 0;
+  for (std::size_t n = 0; n < imageArea.size(); ++n)
+    area += imageArea[n], areaAcross += acrossSeam[n] ? imageArea[n] : 0, pull.facesAcrossSeams += acrossSeam[n];
   pull.areaAcrossSeams = area > 0 ? areaAcross / area : 0;
   cut.textures = target.textures;
   return pull;

@@ -141,7 +141,8 @@ TEST(EndToEnd, AnchorsFarOffLieOnTipsTheGridCutsShort) {
 
 // The same map with 1 and 2 threads: spot -> cow with anchors at 32 cells, and
 // sphere -> torus (surgery) at 32 cells. Every image agrees within 1e-6 of the target's
-// diagonal, and the cut has the same faces.
+// diagonal, the cut has the same faces, and every figure of the report but the times and
+// the peak memory has the same bits (`eulermap map` and map_meshes compare them exactly).
 TEST(EndToEnd, OneAndTwoThreadsAgree) {
   for (int pair = 0; pair < 2; ++pair) {
     Mesh source, target;
@@ -169,5 +170,8 @@ TEST(EndToEnd, OneAndTwoThreadsAgree) {
     std::printf("[ figures  ] %s: 1 vs 2 threads, largest image difference %.2e of diagonal %.3g\n",
                 pair == 0 ? "spot -> cow" : "sphere -> torus", worst, target.bbox.Diag());
     EXPECT_LE(worst, 1e-6 * target.bbox.Diag());
+    for (const Figure &figure : FigureTable())
+      if (figure.unit != FigureUnit::Seconds && std::string(figure.name) != "peak_memory_mib")
+        EXPECT_EQ(figure.value(one.report), figure.value(two.report)) << figure.name;
   }
 }
