@@ -529,8 +529,10 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   // Where the images cross the target's texture seams, faces narrowed down to half the
   // target's own edges before the coordinates are pulled (refine_stretched.h, RefineAtSeams).
   const TexCoordKind targetCoords = options.transferTexture ? DetectTexCoords(m.target) : TexCoordKind::None;
+  const TexCoordSeams targetSeams =
+      targetCoords != TexCoordKind::None ? FindSeams(m.target, targetCoords) : TexCoordSeams();
   if (targetCoords != TexCoordKind::None &&
-      (rep.seamSplit = RefineAtSeams(cut, m.target, targetIndex, Charts(FindSeams(m.target, targetCoords)))) > 0)
+      (rep.seamSplit = RefineAtSeams(cut, m.target, targetIndex, Charts(targetSeams))) > 0)
     mapCut();
   vcg::tri::UpdateBounding<Mesh>::Box(mapped);
   vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(mapped);
@@ -543,7 +545,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
 #pragma omp parallel for schedule(static) num_threads(Threads())
   for (long n = 0; n < long(mapped.vert.size()); ++n) onTarget[n] = targetIndex.Query(mapped.vert[n].cP());
   if (options.transferTexture) {
-    const TexCoordPull pull = PullTexCoords(cut, m.target, onTarget);
+    const TexCoordPull pull = PullTexCoords(cut, m.target, targetCoords, targetSeams, onTarget);
     rep.texture = pull.from == TexCoordKind::None ? "none pulled (the target has no texture coordinates)"
                   : std::string("pulled per wedge from the target's per-") +
                         (pull.from == TexCoordKind::PerWedge ? "wedge" : "vertex") + " coordinates; " +

@@ -36,11 +36,11 @@ std::vector<int> LocalChart(const Mesh &target, const TexCoordSeams &seams, int 
 
 } // namespace
 
-TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<ClosestHit> &hits) {
+TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, TexCoordKind kind, const TexCoordSeams &seams,
+                           const std::vector<ClosestHit> &hits) {
   TexCoordPull pull;
-  pull.from = DetectTexCoords(target);
+  pull.from = kind;
   if (pull.from == TexCoordKind::None) return pull;
-  const TexCoordSeams seams = FindSeams(target, pull.from);
   auto index = [&](const Face *f) { return int(f - &target.face[0]); };
 
   std::vector<double> imageArea(cut.face.size(), 0.0);  // per face (summed in order below: any thread count)

@@ -18,8 +18,9 @@ struct TexCoordPull {
   double areaAcrossSeams = 0;  // their share of the images' area (the chords' triangles)
 };
 
-// in:  cut; hits[v], the image of cut's vertex v on `target` (a query of a ClosestPoint
-//      over `target`)
+// in:  cut; target, the kind of its coordinates (DetectTexCoords) and its seams (FindSeams
+//      of that kind); hits[v], the image of cut's vertex v on `target` (a query of a
+//      ClosestPoint over `target`)
 // out: per-wedge texture coordinates and texture index on every face of `cut`,
 //      cut.textures = target.textures; nothing changed when the target has no coordinates.
 // One chart per face. Around the face's images, the target's faces reachable from the
@@ -32,7 +33,8 @@ struct TexCoordPull {
 // continue linearly past its border instead of jumping to the seam's other side (on a
 // torus whose u wraps from 1 to 0, a face over the seam gets u = 0.98 .. 1.02, which a
 // repeating texture shows right; never 0.98 .. 0.02).
-TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, const std::vector<ClosestHit> &hits);
+TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, TexCoordKind kind, const TexCoordSeams &seams,
+                           const std::vector<ClosestHit> &hits);
 
 // in:  cut, hits as for PullTexCoords; which attributes to pull
 // out: the per-vertex colour and/or quality of cut's vertices, interpolated from the
