@@ -1,13 +1,13 @@
 // eulermap::BlockSum — a parallel sum that gives the same bits for any number of threads.
 //
-// An OpenMP reduction adds the threads' partial sums in an order that depends on how many
-// there are. Here the range is cut into fixed blocks, each summed by one thread in a fixed
+// A reduction over the threads would add their partial sums in an order that depends on
+// how many there are. Here the range is cut into fixed blocks, each summed by one thread in a fixed
 // order (the block's own loops may be vectorised: their lanes are fixed by the build), and
 // the blocks' sums are added in order. So maps made with 1 and 2 threads agree bit for bit
 // (test_end_to_end).
 #pragma once
 
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <numeric>
@@ -22,8 +22,7 @@ template <class Block> double BlockSum(long n, Block &&block) {
   constexpr long kBlock = 4096;
   const long blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial(blocks);
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long k = 0; k < blocks; ++k) partial[k] = block(k * kBlock, std::min(n, (k + 1) * kBlock));
+  ParallelFor(blocks, [&](long k) { partial[k] = block(k * kBlock, std::min(n, (k + 1) * kBlock)); });
   return std::accumulate(partial.begin(), partial.end(), 0.0);
 }
 

@@ -2,7 +2,7 @@
 
 #include <type_traits>
 
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,9 +94,9 @@ ScalarField Distance(const Mesh &mesh, const Grid &grid, Gradient *gradient, con
         }
   };
   for (int phase = 0; phase < 4; ++phase) {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(Threads())
-    for (int s = phase; s < dims.Z(); s += 4)
-      for (int t : bySlab[s]) seed(t);
+    ParallelFor((dims.Z() - phase + 3) / 4, [&](long n) {  // slabs phase, phase + 4, ...
+      for (int t : bySlab[phase + 4 * n]) seed(t);
+    });
     if (interrupt.Stop()) return out;
   }
   for (int t : tall) seed(t);
@@ -128,18 +128,16 @@ ScalarField Distance(const Mesh &mesh, const Grid &grid, Gradient *gradient, con
         }
     }
   }
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(count); ++n) out.values[n] = std::sqrt(d2[n]);
+  ParallelFor(long(count), [&](long n) { out.values[n] = std::sqrt(d2[n]); });
   if (gradient) {
-#pragma omp parallel for schedule(static) num_threads(Threads())
-    for (long n = 0; n < long(count); ++n) {
+    ParallelFor(long(count), [&](long n) {
       const long i = n % dims.X(), j = n / dims.X() % dims.Y(), k = n / (long(dims.X()) * dims.Y());
       const Triangle &t = tris[nearest[n]];
       const Point3 away = Offset(t, grid.Node(i, j, k));
       const double d = away.Norm();
       const Point3 unit = d > 0 ? away / d : ((t.b - t.a) ^ (t.c - t.a)).Normalize();  // on the face: its normal
       gradient->values[n] = Vector(unit[0], unit[1], unit[2]);
-    }
+    });
   }
   return out;
 }

@@ -1,5 +1,5 @@
 #include "grow_shrink.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -113,11 +113,10 @@ void GrowShrink::Frame(double t, ScalarField &out) const {
   const long long count = (long long)out.values.size();
   const bool grow = t <= switch_;
   const double s = grow ? (switch_ > 0 ? t / switch_ : 1) : (switch_ < 1 ? (1 - t) / (1 - switch_) : 0);
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long long n = 0; n < count; ++n) {
+  ParallelFor(count, [&](long n) {
     const double a = f0_.values[n], b = f1_.values[n];
     out.values[n] = grow ? std::min(a, std::max(b, d0_[n] - s * l0_)) : std::min(b, std::max(a, d1_[n] - s * l1_));
-  }
+  });
 }
 
 } // namespace eulermap

@@ -11,7 +11,7 @@
 
 #include "eigen_point.h"
 #include "grow_shrink.h"
-#include "threads.h"
+#include "parallel.h"
 #include "union_find.h"
 
 #include <Eigen/Cholesky>
@@ -535,13 +535,12 @@ void Morph::Frame(double t, ScalarField &out, const Interrupt &interrupt) const 
 
   if (impl_->mode == Mode::GrowShrink) return impl_->growShrink->Frame(t, out);
   if (impl_->mode == Mode::LinearBlend) {  // W = identity
-#pragma omp parallel for schedule(static) num_threads(Threads())
-    for (long long i = 0; i < count; ++i) {
+    ParallelFor(count, [&](long i) {
       double v = 0;
       if (t != 1) v += (1 - t) * f0.values[i];
       if (t != 0) v += t * f1.values[i];
       out.values[i] = v;
-    }
+    });
     return;
   }
 
@@ -552,12 +551,10 @@ void Morph::Frame(double t, ScalarField &out, const Interrupt &interrupt) const 
   const int nx = g.dims.X();
   const long long rows = (long long)g.dims.Y() * g.dims.Z();
   const long long rowsBetweenPolls = std::max(1LL, (long long)kNodesBetweenPolls / nx);
-#pragma omp parallel num_threads(Threads())
-  {
+  ParallelPieces(rows, [&](long begin, long end) {
     std::vector<Point3> p0(nx), p1(nx);
     std::vector<double> scratch;
-#pragma omp for schedule(static)
-    for (long long r = 0; r < rows; ++r) {
+    for (long long r = begin; r < end; ++r) {
       if (r % rowsBetweenPolls == 0 ? interrupt.Stop() : interrupt.Cancelled()) continue;
       const int j = int(r % g.dims.Y()), k = int(r / g.dims.Y());
       w.EvaluateRow(g.Node(0, j, k), g.h, nx, want, p0.data(), p1.data(), scratch);
@@ -569,7 +566,7 @@ void Morph::Frame(double t, ScalarField &out, const Interrupt &interrupt) const 
         out.values[idx] = v;
       }
     }
-  }
+  });
 }
 
 // q_i(t): a_i at t = 0 and b_i at t = 1 exactly; in between the ARAP interpolation
@@ -622,12 +619,10 @@ void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, 
   const long long rows = (long long)g.dims.Y() * g.dims.Z();
   const bool want[2] = {true, false};  // W: q(t0) -> q(t1)
   const long long rowsBetweenPolls = std::max(1LL, (long long)kNodesBetweenPolls / nx);
-#pragma omp parallel num_threads(Threads())
-  {
+  ParallelPieces(rows, [&](long begin, long end) {
     std::vector<Point3> moved(nx);
     std::vector<double> scratch, x(nx), nearest2(nx);
-#pragma omp for schedule(static)
-    for (long long r = 0; r < rows; ++r) {
+    for (long long r = begin; r < end; ++r) {
       if (r % rowsBetweenPolls == 0 ? interrupt.Stop() : interrupt.Cancelled()) continue;
       const int j = int(r % g.dims.Y()), k = int(r / g.dims.Y());
       const Point3 start = g.Node(0, j, k);
@@ -644,7 +639,7 @@ void Morph::AnchorMotion(double t0, double t1, double radius, VectorField &out, 
         closeness.values[n] = std::exp(-nearest2[i] / (radius * radius));
       }
     }
-  }
+  });
 }
 
 } // namespace eulermap

@@ -1,6 +1,6 @@
 #include "multigrid.h"
 
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <numeric>
@@ -34,11 +34,9 @@ void FullWeighting(const RedBlackLayout &fine, const RedBlackArrays<N> &from, co
         weight[taps++] = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
       }
   const int nc = coarse.dims[0];
-#pragma omp parallel if (fine.Nodes() >= kParallelNodes) num_threads(Threads())
-  {
+  ParallelPieces(coarse.dims[2], [&](long begin, long end) {
     std::vector<float> row(nc);
-#pragma omp for schedule(static)
-    for (int K = 0; K < coarse.dims[2]; ++K)
+    for (int K = int(begin); K < end; ++K)
       for (int J = 0; J < coarse.dims[1]; ++J) {
         const std::size_t centre = fine.Position(0, 2 * J, 2 * K), first = coarse.Position(0, J, K);
         for (int e = 0; e < N; ++e) {
@@ -57,7 +55,7 @@ void FullWeighting(const RedBlackLayout &fine, const RedBlackArrays<N> &from, co
           for (int I = 1; I < nc; I += 2) odd[(I + 1) / 2] = row[I];
         }
       }
-  }
+  }, fine.Nodes() >= kParallelNodes);
 }
 
 // D_i = g_i g_i^T + beta_i I (beta null: 0) at every fine node, full weighting onto the coarse
@@ -76,12 +74,10 @@ void RestrictBlocks(const RedBlackLayout &fine, const RedBlackArrays<3> &g, cons
         weight[taps++] = (di ? 0.5f : 1.0f) * (dj ? 0.5f : 1.0f) * (dk ? 0.5f : 1.0f) / 8.0f;
       }
   const int nc = coarse.dims[0];
-#pragma omp parallel if (fine.Nodes() >= kParallelNodes) num_threads(Threads())
-  {
+  ParallelPieces(coarse.dims[2], [&](long begin, long end) {
     std::vector<float> rows[6];
     for (std::vector<float> &r : rows) r.resize(nc);
-#pragma omp for schedule(static)
-    for (int K = 0; K < coarse.dims[2]; ++K)
+    for (int K = int(begin); K < end; ++K)
       for (int J = 0; J < coarse.dims[1]; ++J) {
         const std::size_t centre = fine.Position(0, 2 * J, 2 * K), first = coarse.Position(0, J, K);
         float *r0 = rows[0].data(), *r1 = rows[1].data(), *r2 = rows[2].data(), *r3 = rows[3].data(), *r4 = rows[4].data(),
@@ -110,7 +106,7 @@ void RestrictBlocks(const RedBlackLayout &fine, const RedBlackArrays<3> &g, cons
           for (int I = 1; I < nc; I += 2) odd[(I + 1) / 2] = rows[e][I];
         }
       }
-  }
+  }, fine.Nodes() >= kParallelNodes);
 }
 } // namespace
 
@@ -189,11 +185,9 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
     }
   });
   const int nc = cd[0];
-#pragma omp parallel if (fine.layout.Nodes() >= kParallelNodes) num_threads(Threads())
-  {
+  ParallelPieces(fine.dims[2], [&](long begin, long end) {
     std::vector<float> sum(nc);
-#pragma omp for schedule(static)
-    for (int k = 0; k < fine.dims[2]; ++k)
+    for (int k = int(begin); k < end; ++k)
       for (int j = 0; j < fine.dims[1]; ++j) {
         // The coarse rows around fine row (j, k), (J0, J1) x (K0, K1) (equal for an even
         // index), summed: 4 times the trilinear interpolation in y and z. Then in x, onto
@@ -212,7 +206,7 @@ void BlockMultigrid::ProlongAdd(Level &coarse, Level &fine) {
             for (int n = 0; n < run.count; ++n) x[n] += 0.125f * (sum[n] + sum[n + 1]);
         }
       }
-  }
+  }, fine.layout.Nodes() >= kParallelNodes);
 }
 
 void BlockMultigrid::Sweep(Level &l, int c, bool fromZero, std::vector<double> *plane) {

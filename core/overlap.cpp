@@ -3,7 +3,7 @@
 #include "eigen_point.h"
 #include "grid.h"
 #include "sdf.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -78,8 +78,7 @@ struct Overlaps {
   // The best of the candidates (the first of equal ones), and its IoU.
   std::pair<Candidate, double> Best(const std::vector<Candidate> &candidates) const {
     std::vector<double> iou(candidates.size());
-#pragma omp parallel for schedule(dynamic, 16) num_threads(Threads())
-    for (long n = 0; n < long(candidates.size()); ++n) iou[n] = IoU(candidates[n]);
+    ParallelFor(long(candidates.size()), [&](long n) { iou[n] = IoU(candidates[n]); });
     const std::size_t best = std::max_element(iou.begin(), iou.end()) - iou.begin();
     return {candidates[best], iou[best]};
   }

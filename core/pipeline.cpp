@@ -17,6 +17,7 @@
 #include "sdf.h"
 #include "surgery.h"
 #include "surgery_plan.h"
+#include "parallel.h"
 #include "threads.h"
 #include "topology.h"
 #include "tracker.h"
@@ -259,13 +260,12 @@ Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels
   Fields s;
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
   // fields are made side by side.
-#pragma omp parallel sections num_threads(Threads())
-  {
-#pragma omp section
-    s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr, interrupt);
-#pragma omp section
-    s.f1 = SignedDistance(m.placed, grid, &s.gradient1, interrupt);
-  }
+  ParallelFor(2, [&](long field) {
+    if (field == 0)
+      s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr, interrupt);
+    else
+      s.f1 = SignedDistance(m.placed, grid, &s.gradient1, interrupt);
+  });
   if (interrupt.Cancelled()) throw Error("cancelled");
   RequireInside(s.f0, "source");
   RequireInside(s.f1, "target");
@@ -465,8 +465,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   rep.pointsAdded = surgery.PointsAdded();
   rep.quality.onSurfaceRate = OnSurfaceRate(images, placedIndex, 0.005 * diag);
   std::vector<ClosestHit> hits(images.size());
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(images.size()); ++n) hits[n] = placedIndex.Query(images[n]);
+  ParallelFor(long(images.size()), [&](long n) { hits[n] = placedIndex.Query(images[n]); });
   const std::size_t vertices = m.source.vert.size();
   for (std::size_t n = 0; n < m.a.size(); ++n) {
     AnchorFigure figure;
@@ -542,8 +541,7 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   // The inverse method (transfer.h): the cut reads the target at the final images.
   stage(0.96, "pulling the target's attributes");
   std::vector<ClosestHit> onTarget(mapped.vert.size());
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(mapped.vert.size()); ++n) onTarget[n] = targetIndex.Query(mapped.vert[n].cP());
+  ParallelFor(long(mapped.vert.size()), [&](long n) { onTarget[n] = targetIndex.Query(mapped.vert[n].cP()); });
   if (options.transferTexture) {
     const TexCoordPull pull = PullTexCoords(cut, m.target, targetCoords, targetSeams, onTarget);
     rep.texture = pull.from == TexCoordKind::None ? "none pulled (the target has no texture coordinates)"

@@ -1,6 +1,6 @@
 #include "quality.h"
 
-#include "threads.h"
+#include "parallel.h"
 #include "union_find.h"
 
 #include <vcg/complex/algorithms/point_sampling.h>
@@ -53,13 +53,12 @@ std::vector<UncoveredPart> GroupPoints(const std::vector<Point3> &points, double
 
 double OnSurfaceRate(const std::vector<Point3> &points, const ClosestPoint &surface, double tolerance) {
   if (points.empty()) return 1;
-  long inside = 0;
-#pragma omp parallel for reduction(+ : inside) schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(points.size()); ++n) {
+  std::vector<char> inside(points.size());
+  ParallelFor(long(points.size()), [&](long n) {
     const ClosestHit hit = surface.Query(points[n], 2 * tolerance);
-    inside += hit.face != nullptr && hit.distance <= tolerance;
-  }
-  return double(inside) / points.size();
+    inside[n] = hit.face != nullptr && hit.distance <= tolerance;
+  });
+  return double(std::count(inside.begin(), inside.end(), 1)) / points.size();
 }
 
 double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<UncoveredPart> *uncovered, int samples) {
@@ -70,11 +69,10 @@ double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<Uncove
   if (points.empty()) return 1;
   const ClosestPoint index(mapped);
   std::vector<char> near(points.size());
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(points.size()); ++n) {
+  ParallelFor(long(points.size()), [&](long n) {
     const ClosestHit hit = index.Query(points[n], 2 * tolerance);
     near[n] = hit.face != nullptr && hit.distance <= tolerance;
-  }
+  });
   std::vector<Point3> missed;
   for (std::size_t n = 0; n < points.size(); ++n)
     if (!near[n]) missed.push_back(points[n]);
@@ -85,17 +83,16 @@ double Coverage(Mesh &target, Mesh &mapped, double tolerance, std::vector<Uncove
 double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target) {
   vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(mapped);
   // Per face, its area and whether it is flipped, then summed in face order: the same bits
-  // for any number of threads (an OpenMP reduction adds in an order that depends on it).
+  // for any number of threads (a parallel sum would add in an order that depends on it).
   std::vector<double> area(mapped.face.size(), 0.0);
   std::vector<char> flipped(mapped.face.size(), 0);
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(mapped.face.size()); ++n) {
+  ParallelFor(long(mapped.face.size()), [&](long n) {
     const Face &f = mapped.face[n];
-    if (f.IsD()) continue;
+    if (f.IsD()) return;
     area[n] = vcg::DoubleArea(f) / 2;
     const ClosestHit hit = target.Query(vcg::Barycenter(f));
     flipped[n] = hit.face && f.cN() * hit.face->cN() < 0;
-  }
+  });
   double flippedArea = 0, total = 0;
   for (std::size_t n = 0; n < area.size(); ++n) total += area[n], flippedArea += flipped[n] ? area[n] : 0;
   return total > 0 ? flippedArea / total : 0;

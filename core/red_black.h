@@ -15,7 +15,7 @@
 #pragma once
 
 #include "mesh.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -83,11 +83,14 @@ constexpr std::size_t kParallelNodes = 16384;
 // (from kParallelNodes nodes).
 template <class Fn> void ForEachRun(const RedBlackLayout &layout, int firstColour, int lastColour, Fn &&fn) {
   const vcg::Point3i &d = layout.dims;
-#pragma omp parallel for schedule(static) if (layout.Nodes() >= kParallelNodes) num_threads(Threads())
-  for (int k = 0; k < d[2]; ++k)
-    for (int j = 0; j < d[1]; ++j)
-      for (int c = firstColour; c <= lastColour; ++c)
-        fn(j, k, c, layout.RowRun(c, j, k), std::size_t(d[0]) * (j + std::size_t(d[1]) * k));
+  ParallelFor(
+      d[2],
+      [&](long k) {
+        for (int j = 0; j < d[1]; ++j)
+          for (int c = firstColour; c <= lastColour; ++c)
+            fn(j, int(k), c, layout.RowRun(c, j, int(k)), std::size_t(d[0]) * (j + std::size_t(d[1]) * k));
+      },
+      layout.Nodes() >= kParallelNodes);
 }
 
 // Sum of the six neighbours of the node at m of a run (run.west: its x-offset) in the other

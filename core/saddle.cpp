@@ -1,7 +1,7 @@
 #include "saddle.h"
 
 #include "eigen_point.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <Eigen/Dense>
 
@@ -83,18 +83,13 @@ std::vector<Saddle> FindSaddles(const VectorField &V) {
   // V_a >= 0. A trilinear component lies between its corner values, so a cell can hold a
   // zero only when its corners' bits together are all six.
   std::vector<unsigned char> signs(V.values.size());
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(signs.size()); ++n) {
+  ParallelFor(long(signs.size()), [&](long n) {
     const Point3 &v = V.values[n];
     signs[n] = (v[0] <= 0) | (v[1] <= 0) << 1 | (v[2] <= 0) << 2 | (v[0] >= 0) << 3 | (v[1] >= 0) << 4 | (v[2] >= 0) << 5;
-  }
+  });
   const std::size_t sy = d.X(), sz = sy * d.Y();
-  std::vector<Saddle> found;
-#pragma omp parallel num_threads(Threads())
-  {
-    std::vector<Saddle> mine;
-#pragma omp for schedule(dynamic, 1) nowait
-    for (int k = 0; k < d.Z() - 1; ++k)
+  std::vector<std::vector<Saddle>> byPlane(std::max(0, d.Z() - 1));
+  ParallelFor(long(byPlane.size()), [&](long k) {
       for (int j = 0; j < d.Y() - 1; ++j)
         for (int i = 0; i < d.X() - 1; ++i) {
           const unsigned char *c = &signs[g.Index(i, j, k)];
@@ -124,11 +119,11 @@ std::vector<Saddle> FindSaddles(const VectorField &V) {
           if (u[0] < -eps || u[0] > 1 + eps || u[1] < -eps || u[1] > 1 + eps || u[2] < -eps || u[2] > 1 + eps) continue;
           const int expanding = ExpandingDirections(J);  // dV/du = h dV/dx: same eigenvalues' signs
           if (expanding != 1 && expanding != 2) continue;
-          mine.push_back({g.Node(i, j, k) + Point3(u[0], u[1], u[2]) * g.h, expanding, StableDirection(J, expanding)});
+          byPlane[k].push_back({g.Node(i, j, k) + Point3(u[0], u[1], u[2]) * g.h, expanding, StableDirection(J, expanding)});
         }
-#pragma omp critical
-    found.insert(found.end(), mine.begin(), mine.end());
-  }
+  });
+  std::vector<Saddle> found;
+  for (const std::vector<Saddle> &plane : byPlane) found.insert(found.end(), plane.begin(), plane.end());
   // One zero found from several cells (on a shared face, edge or node) is one saddle.
   std::sort(found.begin(), found.end(), [](const Saddle &a, const Saddle &b) {
     return a.position < b.position;

@@ -34,7 +34,7 @@
 #include "sdf.h"
 
 #include "distance_transform.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <vcg/space/distance3.h>
 
@@ -355,13 +355,12 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
     inside[n] = winding.Inside(p, w);
   };
   auto stop = [&](long n) { return (n & long(kNodesBetweenPolls - 1)) == 0 ? interrupt.Stop() : interrupt.Cancelled(); };
-#pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
-  for (long n = 0; n < long(count); ++n) {
-    if (stop(n)) continue;
+  ParallelFor(long(count), [&](long n) {
+    if (stop(n)) return;
     bool near = nearCone[n];
     forEachNeighbour(n, [&](long m) { near = near || d.values[n] + d.values[m] <= h; });
     if (near) evaluate(n);
-  }
+  });
   // Flood across free edges; a piece with no node evaluated (none, unless the mesh lies
   // outside the grid) gets one evaluation.
   std::vector<char> evaluated(count);
@@ -385,12 +384,12 @@ std::vector<char> Inside(const ScalarField &d, const WindingNumber &winding, con
     queue.push_back(seed);
   }
   // Elsewhere w_mesh = W - w_cone, its sign checked as an estimate's.
-#pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
-  for (long n = 0; n < long(count); ++n)
+  ParallelFor(long(count), [&](long n) {
     if (!stop(n) && !evaluated[n]) {
       const Point3 p = node(n);
       inside[n] = winding.Inside(p, double(whole[n]) - coneWinding(p));
     }
+  });
   return inside;
 }
 
@@ -407,12 +406,12 @@ template <class Gradient> ScalarField Signed(const Mesh &mesh, const Grid &grid,
   const WindingNumber winding(mesh);
   const std::vector<char> inside = Inside(f, winding, ClosingCone(mesh), interrupt);
   if (interrupt.Stop()) return f;
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(f.values.size()); ++n)
+  ParallelFor(long(f.values.size()), [&](long n) {
     if (inside[n]) {
       f.values[n] = -f.values[n];
       if (gradient && f.values[n] < 0) gradient->values[n] = -gradient->values[n];  // not on the surface: the normal
     }
+  });
   return f;
 }
 

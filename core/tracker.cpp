@@ -1,5 +1,5 @@
 #include "tracker.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <cmath>
 
@@ -50,17 +50,15 @@ std::size_t Tracker::Add(const std::vector<Point3> &points, double level) {
 }
 
 void Tracker::Advance(const VectorField &V, const ScalarField &fNext, double dt) {
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(points_.size()); ++n) {
+  ParallelFor(long(points_.size()), [&](long n) {
     Point3 &p = points_[n];
     const Point3 mid = p + V.Sample(p) * (dt / 2);  // Eq. 7, midpoint rule
     p = PullBack(fNext, p + V.Sample(mid) * dt, levels_[n]);
-  }
+  });
 }
 
 void Tracker::Settle(const HermiteField &f1) {
-#pragma omp parallel for schedule(static) num_threads(Threads())
-  for (long n = 0; n < long(points_.size()); ++n) points_[n] = PullBack(f1, points_[n], levels_[n]);
+  ParallelFor(long(points_.size()), [&](long n) { points_[n] = PullBack(f1, points_[n], levels_[n]); });
 }
 
 } // namespace eulermap

@@ -1,6 +1,6 @@
 #include "transfer.h"
 
-#include "threads.h"
+#include "parallel.h"
 
 #include <vcg/simplex/face/distance.h>
 
@@ -45,10 +45,9 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, TexCoordKind kind, con
 
   std::vector<double> imageArea(cut.face.size(), 0.0);  // per face (summed in order below: any thread count)
   std::vector<char> acrossSeam(cut.face.size(), 0);
-#pragma omp parallel for schedule(dynamic, 64) num_threads(Threads())
-  for (long n = 0; n < long(cut.face.size()); ++n) {
+  ParallelFor(long(cut.face.size()), [&](long n) {
     Face &f = cut.face[n];
-    if (f.IsD()) continue;
+    if (f.IsD()) return;
     const ClosestHit *hit[3];
     Box3 region;
     double grow = 0;
@@ -96,7 +95,7 @@ TexCoordPull PullTexCoords(Mesh &cut, const Mesh &target, TexCoordKind kind, con
       f.WT(c) = Interpolate(*nearest, Barycentric(nearest->cP(0), nearest->cP(1), nearest->cP(2), hit[c]->point),
                             pull.from);
     }
-  }
+  });
   double area = 0, areaAcross = 0;
   for (std::size_t n = 0; n < imageArea.size(); ++n)
     area += imageArea[n], areaAcross += acrossSeam[n] ? imageArea[n] : 0, pull.facesAcrossSeams += acrossSeam[n];

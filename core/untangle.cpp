@@ -1,6 +1,6 @@
 #include "untangle.h"
 
-#include "threads.h"
+#include "parallel.h"
 
 #include <vcg/complex/algorithms/update/normal.h>
 
@@ -35,9 +35,9 @@ int Untangle(Mesh &mapped, const ClosestPoint &target, int rounds, int rings) {
   std::vector<char> flipped(faces, 0), recheck(faces, 1);
   std::vector<char> ever(n, 0);
   for (int round = 0; round < rounds; ++round) {
-#pragma omp parallel for schedule(dynamic, 256) num_threads(Threads())
-    for (long f = 0; f < faces; ++f)
+    ParallelFor(faces, [&](long f) {
       if (recheck[f] && !mapped.face[f].IsD()) flipped[f] = Flipped(mapped.face[f], target);
+    });
     std::vector<char> marked(n, 0);
     bool any = false;
     for (long f = 0; f < faces; ++f)
@@ -54,14 +54,13 @@ int Untangle(Mesh &mapped, const ClosestPoint &target, int rounds, int rings) {
       marked.swap(grown);
     }
     std::vector<Point3> next(n);
-#pragma omp parallel for schedule(dynamic, 64) num_threads(Threads())
-    for (long v = 0; v < long(n); ++v) {
+    ParallelFor(long(n), [&](long v) {
       next[v] = mapped.vert[v].cP();
-      if (!marked[v] || neighbours[v].empty()) continue;
+      if (!marked[v] || neighbours[v].empty()) return;
       Point3 mean(0, 0, 0);
       for (int w : neighbours[v]) mean += mapped.vert[w].cP();
       next[v] = target.Query(mean / double(neighbours[v].size())).point;
-    }
+    });
     std::fill(recheck.begin(), recheck.end(), 0);
     for (std::size_t v = 0; v < n; ++v) {
       ever[v] |= marked[v];

@@ -1,7 +1,7 @@
 #include "velocity.h"
 
 #include "block_sum.h"
-#include "threads.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -67,15 +67,13 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
   const double whole = 0.5 / grid_.h, half = 0.5 * whole;  // 0.5: of the mean of the two frames
   const int planesBetweenPolls = std::max(1, int(kNodesBetweenPolls / (sy * d.Y())));
   const long nx = d.X();
-#pragma omp parallel if (layout_.Nodes() >= kParallelNodes) num_threads(Threads())
-  {
+  ParallelPieces(d.Z(), [&](long begin, long end) {
     // A real row at a time: its nodes in Grid::Index order first (contiguous: vectorised),
     // then split by colour into the layout's arrays.
     std::vector<float> G[3], B[3], X[3], S(nx), W(nx);
     for (int a = 0; a < 3; ++a) G[a].resize(nx), B[a].resize(nx), X[a].resize(nx);
     const std::vector<double> none(withPrior ? 0 : nx, 0.0);  // beta without a prior
-#pragma omp for schedule(static)
-    for (int k = 0; k < d.Z(); ++k)
+    for (int k = int(begin); k < end; ++k)
       for (int j = 0; j < d.Y(); ++j) {
         if (j == 0 && k % planesBetweenPolls == 0) interrupt.Stop();  // asks the callback on the caller's thread
         const std::size_t row = sy * (j + std::size_t(d.Y()) * k);
@@ -129,7 +127,7 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
           }
         }
       }
-  }
+  }, layout_.Nodes() >= kParallelNodes);
   if (multigrid) multigrid_->Update(g_, shift_, lendBeta ? &beta : nullptr);
   if (lendBeta) borrow();  // p gets its arrays back
   const double bNorm = std::sqrt(Dot(r_, r_));
@@ -268,13 +266,14 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   if (!done()) p = z;
   // x += step p is put off to the next pass over p (p = z + beta p), or to the end.
   auto advance = [&](float step) {
-#pragma omp parallel num_threads(Threads())
-    for (int e = 0; e < 6; ++e) {
-      float *u = px[e];
-      const float *v = pp[e];
-#pragma omp for simd schedule(static) nowait
-      for (long m = 0; m < n; ++m) u[m] += v[m] * step;
-    }
+    ParallelPieces(n, [&](long begin, long end) {
+      for (int e = 0; e < 6; ++e) {
+        float *u = px[e];
+        const float *v = pp[e];
+#pragma omp simd
+        for (long m = begin; m < end; ++m) u[m] += v[m] * step;
+      }
+    });
   };
   while (!done() && !interrupt.Stop()) {
     const double step = rz / Apply(p, q);  // q = A p
@@ -300,16 +299,17 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
     const double rzNext = precondition(r, z);
     const float beta = float(rzNext / rz);
     rz = rzNext;
-#pragma omp parallel num_threads(Threads())
-    for (int e = 0; e < 6; ++e) {  // x += step p, then p = z + beta p
-      float *u = pp[e], *w = px[e];
-      const float *v = pz[e];
-#pragma omp for simd schedule(static) nowait
-      for (long m = 0; m < n; ++m) {
-        w[m] += u[m] * stepf;
-        u[m] = v[m] + u[m] * beta;
+    ParallelPieces(n, [&](long begin, long end) {
+      for (int e = 0; e < 6; ++e) {  // x += step p, then p = z + beta p
+        float *u = pp[e], *w = px[e];
+        const float *v = pz[e];
+#pragma omp simd
+        for (long m = begin; m < end; ++m) {
+          w[m] += u[m] * stepf;
+          u[m] = v[m] + u[m] * beta;
+        }
       }
-    }
+    });
   }
   s.residual = rNorm / bNorm;
   return s;

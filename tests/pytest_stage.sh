@@ -8,7 +8,6 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 dir=$1 name=$2
 shift 2
-export OMP_WAIT_POLICY=passive  # shared 2-core machines: idle OpenMP threads must not spin
 
 python=.venv/bin/python
 if [ ! -e "$python" ]; then

@@ -151,9 +151,10 @@ def _local_cluster(workers, threads_per_pair):
     from distributed import LocalCluster
     cores = os.cpu_count() or 1
     workers = workers or max(1, cores // max(1, threads_per_pair))
-    # One task at a time per worker process, and that many OpenMP threads for its filter
-    # (read by libgomp when the worker starts, hence the worker's environment).
-    env = {"OMP_NUM_THREADS": str(threads_per_pair), "OMP_WAIT_POLICY": "passive"}
+    # One task at a time per worker process, and that many threads for its filter (the
+    # core's team follows OMP_NUM_THREADS, read by libgomp when the worker starts, hence
+    # the worker's environment).
+    env = {"OMP_NUM_THREADS": str(threads_per_pair)}
     return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
                         env=env, silence_logs=40)
 

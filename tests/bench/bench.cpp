@@ -216,9 +216,9 @@ int main(int argc, char **argv) {
                result.report, row.paperInt + row.paperVf + row.paperDef);
     } else if (mode == "load") {
       // The same map quiet, beside one busy process per core, and beside as many niced ones
-      // (nice 10, as a background build), with OpenMP's settings as the environment leaves
-      // them (tests/bench/run unsets OMP_WAIT_POLICY): a team larger than the cores left idle
-      // at its priority waits at its barriers (threads.h).
+      // (nice 10, as a background build in this session), with OpenMP's settings as the
+      // environment leaves them (tests/bench/run unsets OMP_WAIT_POLICY): the team's loops
+      // must not wait for a member the scheduler took off its core (parallel.h).
       const int n = std::atoi(argv[2]);
       const int cores = int(sysconf(_SC_NPROCESSORS_ONLN));
       double strength;
@@ -230,7 +230,7 @@ int main(int argc, char **argv) {
           const BusyProcesses load(cores, nice);
           busy = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
         }
-        std::printf("load: Table 1 row %d, %.2f s beside %d busy processes at nice %d (%d threads at the start): %.2f "
+        std::printf("load: Table 1 row %d, %.2f s beside %d busy processes at nice %d (%d threads): %.2f "
                     "times quiet\n",
                     n, busy, cores, nice, result.report.threads, busy / quiet);
       }

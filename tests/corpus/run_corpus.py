@@ -181,7 +181,7 @@ def run_meshlabserver(case, job, display):
     cut, mapped = os.path.join(d, "cut.ply"), os.path.join(d, "mapped.ply")
     cmd = ["meshlabserver", "-l", log, "-i", job["meshes"]["source"]["file"], job["meshes"]["target"]["file"],
            "-s", script, "-o", cut, "-l", "2", "-m", "vq", "-o", mapped, "-l", "3", "-m", "vq"]
-    env = dict(os.environ, DISPLAY=display, OMP_WAIT_POLICY="passive")
+    env = dict(os.environ, DISPLAY=display)
     rc, seconds, peak = run_limited(cmd, os.path.join(d, "meshlabserver.out"), env)
     text = open(log, errors="replace").read() if os.path.exists(log) else ""
     out_text = open(os.path.join(d, "meshlabserver.out"), errors="replace").read()
@@ -211,7 +211,7 @@ def run_pymeshlab(case, job):
         json.dump({"plugin": PLUGIN_2025, "source": job["meshes"]["source"], "target": job["meshes"]["target"],
                    "params": job["params"], "result": result}, f)
     # apply_logged's temporary log file lands in d, where it stays when the process is killed
-    env = dict(os.environ, OMP_WAIT_POLICY="passive", TMPDIR=d)
+    env = dict(os.environ, TMPDIR=d)
     rc, seconds, peak = run_limited([VENV_PYTHON, os.path.join(HERE, "pymeshlab_host.py"), spec],
                               os.path.join(d, "python.out"), env)
     res = json.load(open(result)) if os.path.isfile(result) else {"stage": "not started"}
