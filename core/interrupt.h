@@ -8,7 +8,8 @@
 // pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
 // system's assembly and of the labelling of the morph's first inside set
 // (zero_set_topology.h); also once a solver's arrays are
-// allocated and once a system is assembled. The pipeline reports its stages between them
+// allocated (a large array's every kBytesBetweenPolls while it is filled: AssignPolling) and
+// once a system is assembled. The pipeline reports its stages between them
 // (pipeline.h).
 //
 // Stop() never throws, so it may be asked inside a parallel region: on the thread that
@@ -17,15 +18,20 @@
 // stops returns what it has; its caller then throws Error("cancelled") (Cancelled()).
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <functional>
 #include <thread>
+#include <vector>
 
 namespace eulermap {
 
 // Nodes of a distance-transform sweep between two polls.
 constexpr std::size_t kNodesBetweenPolls = std::size_t(1) << 18;
+
+// Bytes of a large array filled between two polls (AssignPolling).
+constexpr std::size_t kBytesBetweenPolls = std::size_t(32) << 20;
 
 class Interrupt {
  public:
@@ -47,5 +53,18 @@ class Interrupt {
   std::thread::id owner_;
   mutable std::atomic<bool> cancelled_{false};
 };
+
+// v = n copies of value, kBytesBetweenPolls at a time with a poll after each: the kernel
+// clears a fresh page at its first touch, which took up to 20 s for a 1.4 GB array (the
+// velocity solver's at 384^3, on a virtual machine; docs/NOTES.md).
+template <class T> void AssignPolling(std::vector<T> &v, std::size_t n, const T &value, const Interrupt &interrupt) {
+  v.clear();
+  v.reserve(n);
+  const std::size_t piece = std::max<std::size_t>(1, kBytesBetweenPolls / sizeof(T));
+  while (v.size() < n) {
+    v.resize(std::min(n, v.size() + piece), value);
+    interrupt.Stop();
+  }
+}
 
 } // namespace eulermap

@@ -530,7 +530,7 @@ void Morph::Frame(double t, ScalarField &out, const Interrupt &interrupt) const 
   const ScalarField &f0 = *impl_->f0, &f1 = *impl_->f1;
   const Grid &g = f0.grid;
   out.grid = g;
-  out.values.resize(g.NodeCount());
+  if (out.values.size() != g.NodeCount()) AssignPolling(out.values, g.NodeCount(), 0.0, interrupt);
   const long long count = (long long)g.NodeCount();
 
   if (impl_->mode == Mode::GrowShrink) return impl_->growShrink->Frame(t, out);

@@ -126,7 +126,7 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha, const Interrupt &
   for (Level &l : levels_) {
     const bool finest = &l == &levels_.front();
     l.layout = RedBlackLayout(l.dims);
-    l.r.Resize(l.layout, 1);
+    l.r.Resize(l.layout, 1, interrupt);
     if (finest) continue;  // its blocks, x and b come from the solver (Update, Precondition)
     l.data.Resize(l.layout);
     l.shift.Resize(l.layout);

@@ -14,6 +14,7 @@
 // -1 when it is even), m -/+ P_x / 2 in y and m -/+ P_x P_y / 2 in z.
 #pragma once
 
+#include "interrupt.h"
 #include "mesh.h"
 #include "parallel.h"
 
@@ -66,10 +67,11 @@ struct RedBlackLayout {
 template <int N, class T = float> struct RedBlackArrays {
   std::vector<T> c[2][N];
 
-  // Zeroed arrays for colours 0 .. colours - 1 (1: red only).
-  void Resize(const RedBlackLayout &layout, int colours = 2) {
+  // Zeroed arrays for colours 0 .. colours - 1 (1: red only), the interrupt asked while
+  // they are filled (AssignPolling).
+  void Resize(const RedBlackLayout &layout, int colours = 2, const Interrupt &interrupt = Interrupt()) {
     for (int colour = 0; colour < colours; ++colour)
-      for (std::vector<T> &a : c[colour]) a.assign(layout.Positions(), T(0));
+      for (std::vector<T> &a : c[colour]) AssignPolling(a, layout.Positions(), T(0), interrupt);
   }
 };
 

@@ -37,12 +37,13 @@ VelocitySolve VelocitySolver::Solve(const ScalarField &fk, const ScalarField &fk
                                     const VectorField &prior, const ScalarField &priorWeight, const Interrupt &interrupt) {
   grid_ = fk.grid;
   // The first step allocates (and zeroes: the pages are touched) every array: seconds on big
-  // grids, so the interrupt is asked after each.
-  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims) V = VectorField(grid_, Point3(0, 0, 0)), interrupt.Stop();
+  // grids, so the interrupt is asked while each is filled.
+  if (V.values.size() != grid_.NodeCount() || V.grid.dims != grid_.dims)
+    V.grid = grid_, AssignPolling(V.values, grid_.NodeCount(), Point3(0, 0, 0), interrupt);
   if (layout_.dims != grid_.dims) {
     layout_ = RedBlackLayout(grid_.dims);
-    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_), interrupt.Stop();
-    shift_.Resize(layout_);
+    for (Vectors *v : {&g_, &x_, &r_, &p_, &q_, &previous_}) v->Resize(layout_, 2, interrupt);
+    shift_.Resize(layout_, 2, interrupt);
   }
   const bool withPrior = !prior.values.empty(), multigrid = method_ == Method::Multigrid;
   if (multigrid && (!multigrid_ || multigrid_->Dims() != grid_.dims))
