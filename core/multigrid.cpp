@@ -128,17 +128,16 @@ BlockMultigrid::BlockMultigrid(const Grid &grid, double alpha, const Interrupt &
     l.layout = RedBlackLayout(l.dims);
     l.r.Resize(l.layout, 1, interrupt);
     if (finest) continue;  // its blocks, x and b come from the solver (Update, Precondition)
-    l.data.Resize(l.layout);
-    l.shift.Resize(l.layout);
+    l.data.Resize(l.layout, 2, interrupt);
+    l.shift.Resize(l.layout, 2, interrupt);
     ForEachRun(l.layout, 0, 1, [&](int j, int k, int c, const RedBlackLayout::Run &run, std::size_t) {
       for (int n = 0; n < run.count; ++n) l.shift.c[c][0][run.first + n] = float(l.alpha * l.layout.NeighbourCount(run.firstI + 2 * n, j, k));
     });
-    l.inverse.Resize(l.layout);
-    l.diagonal.Resize(l.layout, 1);
-    l.ownX.Resize(l.layout), l.x = &l.ownX;
-    l.ownB.Resize(l.layout), l.b = &l.ownB;
-    for (std::vector<float> &g : l.gathered) g.resize(l.Count());
-    interrupt.Stop();
+    l.inverse.Resize(l.layout, 2, interrupt);
+    l.diagonal.Resize(l.layout, 1, interrupt);
+    l.ownX.Resize(l.layout, 2, interrupt), l.x = &l.ownX;
+    l.ownB.Resize(l.layout, 2, interrupt), l.b = &l.ownB;
+    for (std::vector<float> &g : l.gathered) AssignPolling(g, l.Count(), 0.0f, interrupt);
   }
 }
 

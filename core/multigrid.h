@@ -52,8 +52,8 @@ namespace eulermap {
 // vectors of the conjugate gradients around the preconditioner (velocity.h).
 class BlockMultigrid {
  public:
-  // in:  the grid (its node counts set the levels), alpha; interrupt, asked after each
-  //      level's allocation (its answer is left to the caller). Allocates every level once;
+  // in:  the grid (its node counts set the levels), alpha; interrupt, asked while each
+  //      level's arrays are filled (its answer is left to the caller). Allocates every level once;
   //      the operator is set by Update, step after step.
   BlockMultigrid(const Grid &grid, double alpha, const Interrupt &interrupt = Interrupt());
 
