@@ -495,7 +495,10 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   };
   mapCut();
   const ClosestPoint targetIndex(m.target);
-  const double splitLength = kSplitCells * grid.h / m.place.scale;  // refine_stretched.h, target units
+  // refine_stretched.h, target units: the grid's scale, or the share of the target's diagonal
+  // that counts as stretched (Failures) where the target spans fewer than kSplitCells /
+  // kStretchedShare = 40 cells (chair -> table at 48 cells: 38.4).
+  const double splitLength = std::min(kSplitCells * grid.h / m.place.scale, kStretchedShare * m.target.bbox.Diag());
   // The two rims of each disc pair go onto one curve (glue_rims.h), as a continuous map needs.
   std::vector<Point3> discPairs;
   for (const EventSurgery &s : rep.surgery)

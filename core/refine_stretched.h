@@ -29,7 +29,9 @@
 
 namespace eulermap {
 
-constexpr double kSplitCells = 2;  // an edge longer than this many grid cells on the target is split
+// An edge longer than this many grid cells on the target is split (or than the share of the
+// target's diagonal that the pipeline counts as stretched, where that is shorter).
+constexpr double kSplitCells = 2;
 // A chord whose midpoint lies outside, this far from the target per unit of its length,
 // crosses a gap: across a gap between its lips the midpoint lies half the chord's length
 // away; across a right-angled concave corner (the rim of the hole between a chair's slats

@@ -143,7 +143,10 @@ std::string Report::ToText() const {
     if (n < surgery.size()) {
       const EventSurgery &s = surgery[n];
       if (s.outcome == EventCut::Cut)
-        o << Format(": cut (axis from %s), %d faces removed, rim length %.4g", s.axisFromSaddle ? "a saddle of V" : "f's Hessian",
+        o << Format(": cut (axis from %s)%s, %d faces removed, rim length %.4g",
+                    s.axisFromSaddle ? "a saddle of V" : "f's Hessian",
+                    s.stepsLate == 0 ? ""
+                                     : Format(" at step %d, when the tracked surface reached it", e.step + 1 + s.stepsLate).c_str(),
                     s.facesRemoved, s.rimLength);
       else if (s.outcome == EventCut::AwayFromSurface)
         o << Format(": not cut, the tracked surface is %.1f cells away (a part no tracked point reaches)", s.distanceCells);

@@ -74,11 +74,12 @@ struct MapQuality {
 // What surgery did at one topology event (surgery_plan.h decides which it acts on, surgery.h
 // and cut_axis.h how).
 enum class EventCut {
-  Planned,          // surgery acts on it at its step (surgery_plan.h); one of the next five after
+  Planned,          // surgery acts on it from its step (surgery_plan.h); one of the next five after
   Cut,              // the tracked surface was cut there
   Collapsed,        // a part dying: the piece of the tracked surface that shrank with it was removed
   NotACutKind,      // a part or cavity born or dying, a cavity filled or opened: no sheet meets or parts
-  AwayFromSurface,  // no tracked triangle within 6 cells + the hole radius (an untracked part's event)
+  AwayFromSurface,  // no tracked triangle within 6 cells + the hole radius, at its step or as it came nearer
+                    // (an untracked part's event)
   OneSheetTracked,  // sheets meet, but one side has no tracked face (a part grown from nothing merging)
   Undone,           // an opposite event nearby soon undid it (surgery_plan.h)
   SourceGrid,       // f0's inside set has a feature the source mesh has not; this removed it
@@ -91,6 +92,7 @@ struct EventSurgery {
   bool axisFromSaddle = false;  // the cut's axis came from a saddle of V (else from f's Hessian)
   int facesRemoved = 0;       // faces of the tracked surface removed (Cut only)
   double rimLength = 0;       // length of the boundary left, world units (Cut only)
+  int stepsLate = 0;          // steps after the event's own that the tracked surface reached it (Cut only)
 };
 
 // The topology of the inside set {f(., t) < 0} after a step where it changed

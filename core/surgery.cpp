@@ -130,6 +130,7 @@ std::vector<Point3> Surgery::Positions(const std::vector<Point3> &tracked) const
 }
 
 bool Surgery::Acts(int k) const {
+  if (!arriving_.empty()) return true;
   for (std::size_t e = next_; e < events_.size() && events_[e].step <= k; ++e)
     if (events_[e].step == k && outcomes_[e].outcome == EventCut::Planned) return true;
   return false;
@@ -140,9 +141,13 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
   while (next_ < events_.size() && events_[next_].step <= k) ++next_;
   std::vector<Point3> position = Positions(tracker.Points());
   std::vector<std::pair<int, Point3>> cutting;  // outcomes that cut at this step, and where
-  for (std::size_t e = begin; e < next_; ++e) {
+  std::vector<std::size_t> acting;  // the step's planned events, then those the tracked surface is still nearing
+  for (std::size_t e = begin; e < next_; ++e)
+    if (outcomes_[e].outcome == EventCut::Planned) acting.push_back(e);
+  acting.insert(acting.end(), arriving_.begin(), arriving_.end());
+  arriving_.clear();
+  for (std::size_t e : acting) {
     EventSurgery &outcome = outcomes_[e];
-    if (outcome.outcome != EventCut::Planned) continue;
     const TopologyEvent &event = events_[e];
     const CutShape shape = ShapeOf(event.kind);
     const double near = kTakesPartCells * cell_ + radius_;
@@ -155,12 +160,18 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
       if (!piece.empty()) cutting.push_back({outcome.event, event.position});
       continue;
     }
-    // 1. A cut kind, where the tracked surface takes part.
+    // 1. A cut kind, where the tracked surface takes part, now or in the steps after while it
+    // comes nearer (it lags the level set where sheets meet).
+    const bool arriving = outcome.outcome == EventCut::AwayFromSurface;
+    const double before = outcome.distanceCells;
     if (shape != CutShape::None) outcome.distanceCells = NearestTriangle(event.position, 2 * near, position) / cell_;
     outcome.outcome = shape == CutShape::None                 ? EventCut::NotACutKind
                       : outcome.distanceCells * cell_ > near ? EventCut::AwayFromSurface
                                                               : EventCut::Cut;
+    if (outcome.outcome == EventCut::AwayFromSurface && (!arriving || outcome.distanceCells < before))
+      arriving_.push_back(e);
     if (outcome.outcome == EventCut::Cut) {
+      outcome.stepsLate = k - event.step;
       // 2. The faces its geometry crosses (b) — where sheets meet, only if both are tracked
       // (a part grown from nothing merging with the surface leaves it as it is) — and the
       // sphere around x (a).

@@ -11,9 +11,13 @@
 //      split) a band; births and cavities are not cut. The tracked surface takes part only
 //      if some tracked triangle lies within kTakesPartCells + the hole radius of x (a part
 //      grown from nothing, which no tracked point reaches, changes topology far from every
-//      tracked triangle): else the event is reported, not cut (the tracked sheets lag the
-//      level set near a critical point, where V vanishes: 5 to 6 cells at sphere -> 3holes,
-//      3 at a blob splitting, at grid 48-64). Where sheets meet, both must be tracked
+//      tracked triangle). The tracked sheets lag the level set near a critical point, where
+//      V vanishes (5 to 6 cells at sphere -> 3holes, 3 at a blob splitting, at grid 48-64;
+//      a torus's hole opening as the grown sphere withdraws, sphere -> ring2 at 128 cells:
+//      13.7 cells at the event's step, within reach 4 steps later): an event the tracked
+//      surface is farther from waits for it, and is acted on at the first step it arrives,
+//      as long as it comes nearer at every step; else it is reported, not cut (an untracked
+//      part's event). Where sheets meet, both must be tracked
 //      (step 2 b finds a tracked face on each side): a part grown from nothing that merges
 //      with the surface is reported, not cut. Where a part dies, the piece of the tracked
 //      surface that shrank with it (already cut off by the events before, and all within
@@ -84,10 +88,12 @@ class Surgery {
   // One step, once the tracked points have moved to t_k+1.
   // in:  k; the saddles of V_k (only to orient cuts; may be empty), fNext = f(., t_k+1), the
   //      tracker (the source's vertices first, in order)
-  // out: faces cut at the step's planned events, the surface cleaned and refined (steps 1-4
-  //      above); the points added appended to tracker; those events' outcomes set
+  // out: faces cut at the step's planned events and at those the tracked surface reaches
+  //      now (step 1), the surface cleaned and refined (steps 1-4 above); the points added
+  //      appended to tracker; those events' outcomes set
   void Step(int k, const std::vector<Saddle> &saddles, const ScalarField &fNext, Tracker &tracker);
-  // Whether step k has events to act on (the pipeline looks for V's saddles only then).
+  // Whether step k has events to act on, or waits for the tracked surface to reach one (the
+  // pipeline looks for V's saddles only then).
   bool Acts(int k) const;
   // Whether stretched edges are split (step 4): once a cut has changed the surface, or from
   // the start when asked. A map that cuts nothing keeps the source's faces.
@@ -152,6 +158,7 @@ class Surgery {
   std::vector<std::size_t> trackedAs_;          // per point: its index in the pipeline's Tracker
   std::vector<TopologyEvent> events_;           // the morph's, in order
   std::size_t next_ = 0;                        // the first event of a step not yet seen
+  std::vector<std::size_t> arriving_;           // events away from the tracked surface, which is nearing them
   bool refineStretched_ = false;                // stretched edges are split (from the start, or after a cut)
 };
 

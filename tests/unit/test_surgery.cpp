@@ -52,6 +52,37 @@ TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
     if (!v.IsD()) EXPECT_LT(std::abs(v.cP().Z() - g.Node(7, 7, 7).Z()), 0.29);
 }
 
+// The tracked sheets lag the level set where they meet: an event the tracked surface is
+// farther from than it takes part at waits for it while it comes nearer, and is cut at the
+// step it arrives; one it does not come nearer to is reported, not cut.
+TEST(Surgery, EventWaitsForTheTrackedSurfaceComingNearer) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
+  Mesh sphere;
+  MakeSphere(sphere, g.Node(5, 5, 5), 0.3, 3);  // 2.25 cells from its centre
+  std::vector<Point3> start, arrived;
+  for (const Vertex &v : sphere.vert) start.push_back(v.cP()), arrived.push_back(v.cP() + g.Node(12, 12, 12) - g.Node(5, 5, 5));
+  Tracker before(start, std::vector<double>(start.size(), 0.0)), after(arrived, std::vector<double>(arrived.size(), 0.0));
+  const std::vector<TopologyEvent> events = {EventAt(g, {12, 12, 12}, TopologyEventKind::HandleGained),  // 9.9 cells away
+                                             EventAt(g, {1, 1, 14}, TopologyEventKind::HandleGained)};   // 8.4, then 15.7
+  Surgery surgery(sphere, g.h, g.h, events, std::vector<EventCut>(events.size(), EventCut::Planned), false);
+  surgery.Step(0, {}, Quadric(g, g.Node(5, 5, 5), Point3(-1, -1, 1)), before);
+  EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
+  EXPECT_TRUE(surgery.Acts(1));  // both wait
+  surgery.Step(1, {}, Quadric(g, g.Node(12, 12, 12), Point3(-1, -1, 1)), after);  // the sphere moved onto the first
+  EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
+  EXPECT_EQ(surgery.Outcomes()[0].stepsLate, 1);
+  EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::AwayFromSurface);
+  EXPECT_FALSE(surgery.Acts(2));  // the second no longer waits
+  Mesh cut;
+  std::vector<EventSurgery> outcomes;
+  surgery.Build(sphere, after.Points(), cut, outcomes);
+  const Topology t = MeasureTopology(cut);  // both poles along z go: an annulus
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  EXPECT_EQ(t.eulerCharacteristic, 0);
+}
+
 // A neck pinching: the band of faces crossing the plane normal to the neck goes.
 TEST(Surgery, PinchingNeckLosesABand) {
   const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
