@@ -24,12 +24,12 @@ namespace {
 
 // Pieces per thread of the team: more pieces share a busy machine's cores better, each costs
 // one atomic increment.
-constexpr long kPiecesPerThread = 8;
+constexpr long kPiecesPerThread = 4;
 
 // How long a thread spins for the next loop, or the caller for the last pieces, before it
 // sleeps: on a quiet machine the core's loops follow each other within this, and a sleeping
 // thread takes tens of microseconds to wake.
-constexpr std::chrono::microseconds kSpin(50);
+constexpr std::chrono::microseconds kSpin(200);
 
 thread_local bool tInLoop = false;  // a pool thread, or a caller inside its loop
 
