@@ -4,13 +4,15 @@ namespace eulermap {
 
 TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function<void(double)> &progress) {
   // The host hears from it before each pass over the grid (each step's frame, its sign
-  // flips and its topology) and while the first frame is labelled.
+  // flips and its topology), while the first frame is made (its array filled: AssignPolling;
+  // a throw from there reaches the caller through parallel.h) and labelled, and while the
+  // sign flips are found.
   auto poll = [&](int k) {
     if (progress) progress(double(k) / steps);
   };
   TopologyHistory history;
   ScalarField f;
-  morph.Frame(0, f);
+  morph.Frame(0, f, Interrupt([&] { return poll(0), true; }));
   InsideSetTracker insideSet(f, [&] { poll(0); });
   auto frame = [&](int step) {
     const ZeroSetTopology t = insideSet.Topology();
@@ -21,7 +23,7 @@ TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function
     poll(k);
     morph.Frame(double(k + 1) / steps, f);
     poll(k);
-    const std::vector<TopologyEvent> events = insideSet.Advance(f, k);
+    const std::vector<TopologyEvent> events = insideSet.Advance(f, k, [&] { poll(k); });
     if (events.empty()) continue;
     poll(k);
     history.events.insert(history.events.end(), events.begin(), events.end());

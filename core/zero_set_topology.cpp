@@ -490,7 +490,7 @@ ZeroSetTopology InsideSetTracker::Topology() const {
   return t;
 }
 
-std::vector<TopologyEvent> InsideSetTracker::Advance(const ScalarField &next, int step) {
+std::vector<TopologyEvent> InsideSetTracker::Advance(const ScalarField &next, int step, const std::function<void()> &poll) {
   State &s = *state_;
   if (next.grid.dims != s.grid.dims || next.grid.origin != s.grid.origin || next.grid.h != s.grid.h ||
       next.values.size() != s.value.size())
@@ -500,8 +500,10 @@ std::vector<TopologyEvent> InsideSetTracker::Advance(const ScalarField &next, in
     std::size_t node;
   };
   std::vector<Crossing> flips;
-  for (std::size_t n = 0; n < s.value.size(); ++n)
+  for (std::size_t n = 0; n < s.value.size(); ++n) {
+    if (poll && n > 0 && n % kNodesBetweenPolls == 0) poll();
     if ((s.value[n] < 0) != (next.values[n] < 0)) flips.push_back({s.value[n] / (s.value[n] - next.values[n]), n});
+  }
   std::sort(flips.begin(), flips.end(),
             [](const Crossing &a, const Crossing &b) { return a.at < b.at || (a.at == b.at && a.node < b.node); });
   std::vector<TopologyEvent> events;

@@ -132,9 +132,11 @@ class InsideSetTracker {
   explicit InsideSetTracker(const ScalarField &first, const std::function<void()> &poll = {});
   ~InsideSetTracker();
 
-  // in:  the next frame (same grid, else std::invalid_argument), the step's number
+  // in:  the next frame (same grid, else std::invalid_argument), the step's number; poll
+  //      (may be empty): called every kNodesBetweenPolls nodes while the sign flips are
+  //      found (interrupt.h), may throw to cancel
   // out: the step's events, in the order of their flips; the tracker now holds `next`'s X
-  std::vector<TopologyEvent> Advance(const ScalarField &next, int step);
+  std::vector<TopologyEvent> Advance(const ScalarField &next, int step, const std::function<void()> &poll = {});
 
   // The current X's components, cavities and chi (parts left empty), as Measure gives them.
   ZeroSetTopology Topology() const;
