@@ -40,7 +40,7 @@ struct Options {
   bool transferTexture = true;   // the target's texture coordinates onto the cut (transfer.h)
   bool transferColour = false;   // the target's vertex colours onto the cut
   bool transferQuality = false;  // the target's vertex quality onto the cut, instead of the distortion
-  int threads = 0;           // 0: the cores other processes leave idle (threads.h)
+  int threads = 0;           // 0: OMP_NUM_THREADS, else the machine's cores (threads.h)
 
   // Throws Error naming the parameter (as the hosts call it), its value and the range to give.
   void Validate() const;

@@ -171,11 +171,11 @@ const std::vector<Parameter> &Parameters() {
        [](const Options &o) { return double(o.maxIterations); },
        [](Options &o, double v) { o.maxIterations = int(v); },
        1, 100000, true, "per velocity solve", false},
-      {"threads", K::Int, "Threads", "threads of each parallel region (threads.h); 0: the cores other processes leave idle",
+      {"threads", K::Int, "Threads", "threads of each parallel loop (parallel.h); 0: OMP_NUM_THREADS, else the machine's cores",
        {},
        [](const Options &o) { return double(o.threads); },
        [](Options &o, double v) { o.threads = int(v); },
-       0, 1024, true, "0 uses the cores other processes leave idle", false},
+       0, 1024, true, "0 uses OMP_NUM_THREADS, else the machine's cores", false},
   };
   return table;
 }

@@ -170,8 +170,23 @@ def test_per_vertex_texcoords_of_the_target():
     error = np.abs(uv - np.stack([0.5 + 0.3 * p[:, 0], 0.5 + 0.3 * p[:, 1]], axis=1)).max()
     print(f"\n    per-vertex target: largest UV error {error:.1e} over {len(uv)} wedges")
     assert error <= 1e-5
-    assert np.allclose(mapped.wedge_tex_coord_matrix(), ms.mesh(0).wedge_tex_coord_matrix(), atol=1e-7), \
-        "the mapped layer lost the source's own coordinates"
+    # The mapped layer's faces that are spot's own (the cut's corners, which lie on spot, at a
+    # face of spot's: the ones refinement left whole) keep that face's coordinates, corner by corner.
+    source = ms.mesh(0)
+    own = {}
+    for corners, uvs in zip(source.vertex_matrix()[source.face_matrix()], source.wedge_tex_coord_matrix().reshape(-1, 3, 2)):
+        own[frozenset(map(tuple, np.round(corners, 9)))] = {tuple(c): uv for c, uv in zip(np.round(corners, 9), uvs)}
+    kept = 0
+    for corners, uvs in zip(cut.vertex_matrix()[cut.face_matrix()], mapped.wedge_tex_coord_matrix().reshape(-1, 3, 2)):
+        corners = np.round(corners, 9)
+        face = own.get(frozenset(map(tuple, corners)))
+        if face is None:
+            continue
+        kept += 1
+        for c, uv in zip(corners, uvs):
+            assert np.allclose(uv, face[tuple(c)], atol=1e-7), "the mapped layer lost the source's own coordinates"
+    print(f"    {kept} of spot's {len(source.face_matrix())} faces kept whole, their coordinates kept")
+    assert kept >= len(source.face_matrix()) // 2
 
 
 def test_map_meshes_command():
