@@ -6,11 +6,10 @@
 // V-cycle's smoothing, restriction and coarse levels (velocity.h, multigrid.h), and
 // kNodesBetweenPolls nodes of a distance-transform sweep (distance_transform.h), of each
 // pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
-// system's assembly and of the labelling of the morph's first inside set
-// (zero_set_topology.h); also once a solver's arrays are
-// allocated (a large array's every kBytesBetweenPolls while it is filled: AssignPolling) and
-// once a system is assembled. The pipeline reports its stages between them
-// (pipeline.h).
+// system's assembly, of the labelling of the morph's first inside set and of each step's
+// sign flips (zero_set_topology.h); kBytesBetweenPolls of a large array while it is filled
+// (AssignPolling); and once a system is assembled. The pipeline reports its stages between
+// them (pipeline.h).
 //
 // Stop() never throws, so it may be asked inside a parallel region: on the thread that
 // made the Interrupt (the host's, whose callback may touch its GUI) it asks the callback;

@@ -1,18 +1,29 @@
 #include "morph_topology.h"
 
+#include <exception>
+
 namespace eulermap {
 
 TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function<void(double)> &progress) {
   // The host hears from it before each pass over the grid (each step's frame, its sign
-  // flips and its topology), while the first frame is made (its array filled: AssignPolling;
-  // a throw from there reaches the caller through parallel.h) and labelled, and while the
-  // sign flips are found.
+  // flips and its topology), while the first frame is made (its array filled: AssignPolling)
+  // and labelled, and while the sign flips are found.
   auto poll = [&](int k) {
     if (progress) progress(double(k) / steps);
   };
   TopologyHistory history;
   ScalarField f;
-  morph.Frame(0, f, Interrupt([&] { return poll(0), true; }));
+  std::exception_ptr thrown;  // by progress while the first frame is made: Stop() never throws
+  morph.Frame(0, f, Interrupt([&] {
+    try {
+      poll(0);
+      return true;
+    } catch (...) {
+      thrown = std::current_exception();
+      return false;
+    }
+  }));
+  if (thrown) std::rethrow_exception(thrown);
   InsideSetTracker insideSet(f, [&] { poll(0); });
   auto frame = [&](int step) {
     const ZeroSetTopology t = insideSet.Topology();

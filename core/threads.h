@@ -6,8 +6,8 @@
 //
 // Without a count set, the team is OpenMP's default (OMP_NUM_THREADS, else the cores this
 // process may run on), on a busy machine too: a loop's pieces go to whichever of its threads
-// has a core (parallel.h), so a larger team gets more of a shared machine and never waits
-// for a member the scheduler took off its core. Figures: docs/NOTES.md.
+// has a core (parallel.h), and its end waits only for pieces already begun, so a team of the
+// machine's cores gets more of a shared machine than a smaller one. Figures: docs/NOTES.md.
 #pragma once
 
 namespace eulermap {

@@ -103,4 +103,18 @@ TEST(MorphTopology, AProgressThatThrowsEndsTheTracking) {
   EXPECT_EQ(late, 1);
 }
 
+// The first call comes while the first frame is made (inside the morph's Interrupt): a throw
+// there ends the tracking at once, and reaches the caller as thrown.
+TEST(MorphTopology, AProgressThatThrowsWhileTheFirstFrameIsMadeEndsTheTracking) {
+  const SphereToTorus s;
+  int calls = 0;
+  EXPECT_THROW(TrackTopology(s.morph, kSteps,
+                             [&](double) {
+                               ++calls;
+                               throw std::runtime_error("cancelled");
+                             }),
+               std::runtime_error);
+  EXPECT_EQ(calls, 1);
+}
+
 } // namespace
