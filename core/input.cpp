@@ -99,7 +99,7 @@ int OrientCoherently(Mesh &mesh) {
       Face &f = mesh.face[queue[q]];
       for (int e = 0; e < 3; ++e) {
         const int a = index(f, e), b = index(f, (e + 1) % 3);
-        const std::vector<int> &faces = edgeFaces.Around(a, b);
+        const EdgeFaces::Faces faces = edgeFaces.Around(a, b);
         if (faces.size() != 2) continue;
         const int g = faces[0] == queue[q] ? faces[1] : faces[0];
         if (seen[g]) continue;

@@ -103,9 +103,10 @@ class Pool {
     for (std::thread &t : threads_) t.join();
   }
 
-  // Runs the loop on the caller and up to team - 1 pool threads; false when another
-  // thread's loop holds the pool.
-  bool Run(Loop &loop) {
+  // Runs the loop on the caller and up to team - 1 pool threads, the caller asking
+  // whileWaiting (when given) while it waits for theirs; false when another thread's loop
+  // holds the pool.
+  bool Run(Loop &loop, const Interrupt *whileWaiting) {
     const int helpers = loop.team - 1;
     {
       const std::lock_guard<std::mutex> lock(mutex_);
@@ -124,7 +125,16 @@ class Pool {
     std::unique_lock<std::mutex> lock(mutex_);
     loop_ = nullptr;  // no thread sits down any more
     seats_ = 0;
-    done_.wait(lock, [&] { return working_.load(std::memory_order_relaxed) == 0; });
+    const auto done = [&] { return working_.load(std::memory_order_relaxed) == 0; };
+    if (!whileWaiting) {
+      done_.wait(lock, done);
+      return true;
+    }
+    while (!done_.wait_for(lock, kWaitBetweenPolls, done)) {
+      lock.unlock();
+      whileWaiting->Stop();
+      lock.lock();
+    }
     return true;
   }
 
@@ -164,12 +174,12 @@ class Pool {
 
 namespace detail {
 
-void RunPieces(long n, bool parallel, const void *body, PieceFn fn) {
+void RunPieces(long n, bool parallel, const void *body, PieceFn fn, const Interrupt *whileWaiting) {
   if (n <= 0) return;
   const int team = parallel && !tInLoop ? std::clamp(Threads(), 1, kMaxTeam) : 1;
   if (team == 1 || n == 1) return fn(body, 0, n);  // alone
   Loop loop(n, team, body, fn);
-  if (!Pool::Instance().Run(loop)) loop.ClaimPieces(0);  // alone: another thread's loop holds the pool
+  if (!Pool::Instance().Run(loop, whileWaiting)) loop.ClaimPieces(0);  // alone: another thread's loop holds the pool
   if (loop.error) std::rethrow_exception(loop.error);
 }
 

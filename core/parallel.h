@@ -14,13 +14,20 @@
 // the loop once the pieces claimed are done, and the caller rethrows it.
 #pragma once
 
+#include "interrupt.h"
+
+#include <chrono>
 #include <type_traits>
 
 namespace eulermap {
 
+// How often a caller waiting for the other threads' pieces asks the interrupt it was given
+// (ParallelFor below): the host's progress bar moves and hears Cancel that often.
+constexpr std::chrono::milliseconds kWaitBetweenPolls(100);
+
 namespace detail {
 using PieceFn = void (*)(const void *body, long begin, long end);
-void RunPieces(long n, bool parallel, const void *body, PieceFn fn);
+void RunPieces(long n, bool parallel, const void *body, PieceFn fn, const Interrupt *whileWaiting = nullptr);
 } // namespace detail
 
 // Calls body(begin, end) once for each piece of [0, n) (consecutive ranges that cover it),
@@ -41,6 +48,18 @@ template <class Fn> void ParallelFor(long n, Fn &&fn, bool parallel = true) {
         for (long i = begin; i < end; ++i) fn(i);
       },
       parallel);
+}
+
+// As ParallelFor, for a few long pieces of work (one index each): the calling thread, its
+// own done, asks whileWaiting.Stop() every kWaitBetweenPolls until the others' are (their
+// work asks Stop() too, which off the calling thread only reads an earlier cancel).
+template <class Fn> void ParallelFor(long n, Fn &&fn, const Interrupt &whileWaiting) {
+  auto body = [&fn](long begin, long end) {
+    for (long i = begin; i < end; ++i) fn(i);
+  };
+  detail::RunPieces(
+      n, true, &body, [](const void *b, long begin, long end) { (*static_cast<const decltype(body) *>(b))(begin, end); },
+      &whileWaiting);
 }
 
 } // namespace eulermap

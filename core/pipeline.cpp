@@ -259,13 +259,16 @@ struct Fields {
 Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels, const Interrupt &interrupt) {
   Fields s;
   // The distance transform's sweeps run on one thread each (distance_transform.h): the two
-  // fields are made side by side.
-  ParallelFor(2, [&](long field) {
-    if (field == 0)
-      s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr, interrupt);
-    else
-      s.f1 = SignedDistance(m.placed, grid, &s.gradient1, interrupt);
-  });
+  // fields are made side by side, the host's callback asked while one waits for the other.
+  ParallelFor(
+      2,
+      [&](long field) {
+        if (field == 0)
+          s.f0 = SignedDistance(m.source, grid, sampleLevels ? &s.gradient0 : nullptr, interrupt);
+        else
+          s.f1 = SignedDistance(m.placed, grid, &s.gradient1, interrupt);
+      },
+      interrupt);
   if (interrupt.Cancelled()) throw Error("cancelled");
   RequireInside(s.f0, "source");
   RequireInside(s.f1, "target");

@@ -91,7 +91,7 @@ Surgery::Surgery(const Mesh &source, double radius, double cell, const std::vect
   sourceFaces_ = int(source.face.size());
   for (const Vertex &v : source.vert) sourcePosition_.push_back(v.cP()), trackedAs_.push_back(trackedAs_.size());
   // Faces, the source's own boundary edges, connected components and their areas.
-  EdgeFaces edges;
+  EdgeFaces edges(sourceFaces_);
   UnionFind parts(sourceVertices_);
   tris_.resize(sourceFaces_);
   for (int f = 0; f < sourceFaces_; ++f) {
@@ -195,11 +195,16 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
 }
 
 EdgeFaces Surgery::AliveEdges() const {
-  EdgeFaces edges;
+  EdgeFaces edges(tris_.size());
+  AliveEdges(edges);
+  return edges;
+}
+
+void Surgery::AliveEdges(EdgeFaces &edges) const {
+  edges.Clear();
   for (int n = 0; n < int(tris_.size()); ++n)
     if (tris_[n].state == kAlive)
       for (int e = 0; e < 3; ++e) edges.Add(tris_[n].v[e], tris_[n].v[(e + 1) % 3], n);
-  return edges;
 }
 
 double Surgery::NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const {
@@ -368,20 +373,28 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
     for (const auto &c : cutting)
       if (vcg::Distance(c.second, centre) < best) best = vcg::Distance(c.second, centre), t.state = c.first;
   };
+  EdgeFaces faces(tris_.size());  // refilled every round
   for (int round = 0; round < 1000; ++round) {
-    const EdgeFaces faces = AliveEdges();
-    auto rim = [&](const Tri &t, int e) { return !t.border[e] && faces.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1; };
+    AliveEdges(faces);
+    // The round's rims, looked up once: edge e of alive face n (not the source's border) with
+    // no alive face across sets bit e of rims[n].
+    std::vector<std::uint8_t> rims(tris_.size(), 0);
+    for (int n = 0; n < int(tris_.size()); ++n)
+      if (const Tri &t = tris_[n]; t.state == kAlive)
+        for (int e = 0; e < 3; ++e)
+          if (!t.border[e] && faces.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1) rims[n] |= std::uint8_t(1 << e);
+    auto rim = [&](int n, int e) { return (rims[n] >> e) & 1; };
     bool changed = false;
     // Ears: two or more edges on a rim.
-    for (Tri &t : tris_)
-      if (t.state == kAlive && rim(t, 0) + rim(t, 1) + rim(t, 2) >= 2) remove(t), changed = true;
+    for (int n = 0; n < int(tris_.size()); ++n)
+      if (tris_[n].state == kAlive && rim(n, 0) + rim(n, 1) + rim(n, 2) >= 2) remove(tris_[n]), changed = true;
     if (changed) continue;
     // Non-manifold vertices on a rim: keep the largest fan of faces around them.
     std::unordered_map<int, std::vector<int>> around;
     for (int n = 0; n < int(tris_.size()); ++n)
       if (tris_[n].state == kAlive)
         for (int e = 0; e < 3; ++e)
-          if (rim(tris_[n], e)) around[tris_[n].v[e]], around[tris_[n].v[(e + 1) % 3]];
+          if (rim(n, e)) around[tris_[n].v[e]], around[tris_[n].v[(e + 1) % 3]];
     for (int n = 0; n < int(tris_.size()); ++n)
       if (tris_[n].state == kAlive)
         for (int c = 0; c < 3; ++c) {
@@ -420,7 +433,7 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
         const Tri &t = tris_[n];
         area += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
         for (int e = 0; e < 3; ++e) {
-          hasRim = hasRim || rim(t, e);
+          hasRim = hasRim || rim(n, e);
           for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3]))
             if (piece[m] < 0) piece[m] = seed, stack.push_back(m);
         }
@@ -432,8 +445,8 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
     }
     if (!changed) {
       // The rim is refined as the hole opens (Refine).
-      for (Tri &t : tris_)
-        if (t.state == kAlive && (rim(t, 0) || rim(t, 1) || rim(t, 2))) t.refinable = true;
+      for (int n = 0; n < int(tris_.size()); ++n)
+        if (tris_[n].state == kAlive && rims[n]) tris_[n].refinable = true;
       break;
     }
   }

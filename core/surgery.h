@@ -128,6 +128,7 @@ class Surgery {
 
   std::vector<Point3> Positions(const std::vector<Point3> &tracked) const;
   EdgeFaces AliveEdges() const;  // the alive faces around each edge
+  void AliveEdges(EdgeFaces &edges) const;  // the same, into edges (its room kept)
   // Distance from x to the nearest alive tracked triangle (at most `limit`, returned when none is nearer).
   double NearestTriangle(const Point3 &x, double limit, const std::vector<Point3> &position) const;
   // The connected piece of alive faces nearest to x if all of it lies within reach of x, else none.

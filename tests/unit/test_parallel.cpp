@@ -127,6 +127,50 @@ TEST(Parallel, APieceThatThrowsIsRethrownByTheCallerAndThePoolGoesOn) {
   for (std::atomic<int> &s : seen) ASSERT_EQ(s, 1);
 }
 
+// The two signed distance fields are made so (pipeline.cpp): the caller, its own field done,
+// keeps the host's progress bar moving while the other thread finishes, and a cancel it hears
+// there reaches the other thread's work.
+TEST(Parallel, ACallerWaitingForTheOthersAsksItsInterruptOnItsThread) {
+  const ThreadCount two(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  for (const bool cancel : {false, true}) {
+    std::atomic<bool> otherStarted{false}, otherSawCancel{false};
+    std::atomic<int> calls{0}, callsElsewhere{0};
+    const Interrupt interrupt([&] {
+      ++calls;
+      if (std::this_thread::get_id() != caller) ++callsElsewhere;
+      return !cancel;
+    });
+    ParallelFor(
+        2,
+        [&](long) {
+          const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+          if (std::this_thread::get_id() == caller) {  // its piece ends once the other's has begun
+            while (!otherStarted && std::chrono::steady_clock::now() < end) std::this_thread::yield();
+            return;
+          }
+          otherStarted = true;
+          for (int polls = 0; polls < 45 && std::chrono::steady_clock::now() < end; ++polls) {  // 450 ms of work
+            if (interrupt.Stop()) {
+              otherSawCancel = true;
+              return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+          }
+        },
+        interrupt);
+    ASSERT_TRUE(otherStarted) << "the pool's thread never took the second piece";
+    EXPECT_EQ(callsElsewhere, 0);
+    if (cancel) {
+      EXPECT_EQ(calls, 1);
+      EXPECT_TRUE(otherSawCancel);
+    } else {
+      EXPECT_GE(calls, 2) << "450 ms of the other's work, polls every " << kWaitBetweenPolls.count() << " ms";
+      EXPECT_FALSE(otherSawCancel);
+    }
+  }
+}
+
 TEST(Parallel, AMapLeavesTheProcesssThreadCountAsItFoundIt) {
   Mesh source, target;
   MakeSphere(source, Point3(0, 0, 0), 1, 3);
