@@ -8,7 +8,7 @@
 // pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
 // system's assembly, of the labelling of the morph's first inside set and of each step's
 // sign flips (zero_set_topology.h); kBytesBetweenPolls of a large array while it is filled
-// (AssignPolling); and once a system is assembled. The pipeline reports its stages between
+// (AssignPolling, FillPolling); and once a system is assembled. The pipeline reports its stages between
 // them (pipeline.h).
 //
 // Stop() never throws, so it may be asked inside a parallel region: on the thread that
@@ -62,6 +62,17 @@ template <class T> void AssignPolling(std::vector<T> &v, std::size_t n, const T 
   const std::size_t piece = std::max<std::size_t>(1, kBytesBetweenPolls / sizeof(T));
   while (v.size() < n) {
     v.resize(std::min(n, v.size() + piece), value);
+    interrupt.Stop();
+  }
+}
+
+// v = at(0), ..., at(n - 1), filled as AssignPolling fills.
+template <class T, class At> void FillPolling(std::vector<T> &v, std::size_t n, At &&at, const Interrupt &interrupt) {
+  v.clear();
+  v.reserve(n);
+  const std::size_t piece = std::max<std::size_t>(1, kBytesBetweenPolls / sizeof(T));
+  while (v.size() < n) {
+    for (const std::size_t end = std::min(n, v.size() + piece); v.size() < end;) v.push_back(at(v.size()));
     interrupt.Stop();
   }
 }

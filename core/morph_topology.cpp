@@ -6,24 +6,30 @@ namespace eulermap {
 
 TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function<void(double)> &progress) {
   // The host hears from it before each pass over the grid (each step's frame, its sign
-  // flips and its topology), while the first frame is made (its array filled: AssignPolling)
-  // and labelled, and while the sign flips are found.
+  // flips and its topology), while each frame is made (its array filled: AssignPolling), while
+  // the first one is labelled, and while the sign flips are found.
   auto poll = [&](int k) {
     if (progress) progress(double(k) / steps);
   };
   TopologyHistory history;
   ScalarField f;
-  std::exception_ptr thrown;  // by progress while the first frame is made: Stop() never throws
-  morph.Frame(0, f, Interrupt([&] {
-    try {
-      poll(0);
-      return true;
-    } catch (...) {
-      thrown = std::current_exception();
-      return false;
-    }
-  }));
-  if (thrown) std::rethrow_exception(thrown);
+  // Each frame is made with an Interrupt that reports while its array is filled and warped
+  // (384^3: 56.6 M nodes, a second between the polls around it). Stop() never throws: a
+  // throw of progress is held and rethrown after the frame.
+  auto makeFrame = [&](int frame, int k) {  // f(., t_frame), reported as step k
+    std::exception_ptr thrown;
+    morph.Frame(double(frame) / steps, f, Interrupt([&] {
+      try {
+        poll(k);
+        return true;
+      } catch (...) {
+        thrown = std::current_exception();
+        return false;
+      }
+    }));
+    if (thrown) std::rethrow_exception(thrown);
+  };
+  makeFrame(0, 0);
   InsideSetTracker insideSet(f, [&] { poll(0); });
   auto frame = [&](int step) {
     const ZeroSetTopology t = insideSet.Topology();
@@ -32,7 +38,7 @@ TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function
   history.frames.push_back(frame(-1));
   for (int k = 0; k < steps; ++k) {
     poll(k);
-    morph.Frame(double(k + 1) / steps, f);
+    makeFrame(k + 1, k);
     poll(k);
     const std::vector<TopologyEvent> events = insideSet.Advance(f, k, [&] { poll(k); });
     if (events.empty()) continue;

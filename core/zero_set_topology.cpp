@@ -203,9 +203,9 @@ int EulerCharacteristic(const Lattice &lattice, const std::vector<std::uint8_t> 
 }
 
 // in: f; out: per node, 1 if f < 0 there (in X)
-std::vector<std::uint8_t> InsideSet(const ScalarField &f) {
-  std::vector<std::uint8_t> inside(f.values.size());
-  for (std::size_t n = 0; n < inside.size(); ++n) inside[n] = f.values[n] < 0;
+std::vector<std::uint8_t> InsideSet(const ScalarField &f, const Interrupt &interrupt = Interrupt()) {
+  std::vector<std::uint8_t> inside;
+  FillPolling(inside, f.values.size(), [&f](std::size_t n) { return std::uint8_t(f.values[n] < 0); }, interrupt);
   return inside;
 }
 
@@ -324,7 +324,16 @@ struct InsideSetTracker::State {
 };
 
 InsideSetTracker::State::State(const ScalarField &first, const std::function<void()> &poll)
-    : grid(first.grid), lattice(first.grid), inside(InsideSet(first)), value(first.values), mark(first.values.size(), -1) {
+    : grid(first.grid), lattice(first.grid) {
+  // The per-node arrays filled a piece at a time with a poll after each (interrupt.h: the
+  // kernel clears fresh pages at their first touch; at 384^3 they took a second unpolled).
+  const Interrupt interrupt([&poll] {
+    if (poll) poll();
+    return true;
+  });
+  inside = InsideSet(first, interrupt);
+  FillPolling(value, first.values.size(), [&first](std::size_t n) { return first.values[n]; }, interrupt);
+  AssignPolling(mark, first.values.size(), -1, interrupt);
   Labelling l = Label(lattice, inside, poll);
   label = std::move(l.label);
   components = l.components;
