@@ -8,8 +8,8 @@
 // pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
 // system's assembly, of the labelling of the morph's first inside set and of each step's
 // sign flips (zero_set_topology.h); kBytesBetweenPolls of a large array while it is filled
-// (AssignPolling, FillPolling); and once a system is assembled. The pipeline reports its stages between
-// them (pipeline.h).
+// (AssignPolling, FillPolling); and once a system is assembled. The pipeline reports its
+// stages between them (pipeline.h).
 //
 // Stop() never throws, so it may be asked inside a parallel region: on the thread that
 // made the Interrupt (the host's, whose callback may touch its GUI) it asks the callback;
@@ -20,8 +20,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace eulermap {
@@ -51,6 +53,35 @@ class Interrupt {
   Callback callback_;
   std::thread::id owner_;
   mutable std::atomic<bool> cancelled_{false};
+};
+
+// An Interrupt over a poll that may throw to cancel (the pipeline's progress callback does),
+// for work that asks Stop(), which must not throw: the first throw is held, Stop() says stop
+// from then on, and Rethrow() throws it once the work has returned.
+class HeldThrow {
+ public:
+  explicit HeldThrow(std::function<void()> poll)
+      : poll_(std::move(poll)), interrupt_([this] {
+          try {
+            if (poll_) poll_();
+            return true;
+          } catch (...) {
+            thrown_ = std::current_exception();
+            return false;
+          }
+        }) {}
+  HeldThrow(const HeldThrow &) = delete;
+  HeldThrow &operator=(const HeldThrow &) = delete;
+
+  const Interrupt &interrupt() const { return interrupt_; }
+  void Rethrow() const {
+    if (thrown_) std::rethrow_exception(thrown_);
+  }
+
+ private:
+  std::function<void()> poll_;
+  std::exception_ptr thrown_;
+  Interrupt interrupt_;
 };
 
 // v = n copies of value, kBytesBetweenPolls at a time with a poll after each: the kernel

@@ -1,7 +1,5 @@
 #include "morph_topology.h"
 
-#include <exception>
-
 namespace eulermap {
 
 TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function<void(double)> &progress) {
@@ -14,20 +12,11 @@ TopologyHistory TrackTopology(const Morph &morph, int steps, const std::function
   TopologyHistory history;
   ScalarField f;
   // Each frame is made with an Interrupt that reports while its array is filled and warped
-  // (384^3: 56.6 M nodes, a second between the polls around it). Stop() never throws: a
-  // throw of progress is held and rethrown after the frame.
+  // (384^3: 56.6 M nodes, a second between the polls around it).
   auto makeFrame = [&](int frame, int k) {  // f(., t_frame), reported as step k
-    std::exception_ptr thrown;
-    morph.Frame(double(frame) / steps, f, Interrupt([&] {
-      try {
-        poll(k);
-        return true;
-      } catch (...) {
-        thrown = std::current_exception();
-        return false;
-      }
-    }));
-    if (thrown) std::rethrow_exception(thrown);
+    const HeldThrow reporting([&] { poll(k); });
+    morph.Frame(double(frame) / steps, f, reporting.interrupt());
+    reporting.Rethrow();
   };
   makeFrame(0, 0);
   InsideSetTracker insideSet(f, [&] { poll(0); });

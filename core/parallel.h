@@ -22,44 +22,37 @@
 namespace eulermap {
 
 // How often a caller waiting for the other threads' pieces asks the interrupt it was given
-// (ParallelFor below): the host's progress bar moves and hears Cancel that often.
+// (ParallelPieces below): the host's progress bar moves and hears Cancel that often.
 constexpr std::chrono::milliseconds kWaitBetweenPolls(100);
 
 namespace detail {
 using PieceFn = void (*)(const void *body, long begin, long end);
-void RunPieces(long n, bool parallel, const void *body, PieceFn fn, const Interrupt *whileWaiting = nullptr);
+void RunPieces(long n, bool parallel, const void *body, PieceFn fn, const Interrupt *whileWaiting);
 } // namespace detail
 
 // Calls body(begin, end) once for each piece of [0, n) (consecutive ranges that cover it),
 // on up to Threads() threads (threads.h), the calling one among them; on the calling thread
 // alone, with one piece, when !parallel. Which thread works on a piece, and how large the
-// pieces are, must not change the result.
-template <class Body> void ParallelPieces(long n, Body &&body, bool parallel = true) {
+// pieces are, must not change the result. whileWaiting (when given), for a few long pieces
+// of work: the calling thread, its own pieces done, asks whileWaiting->Stop() every
+// kWaitBetweenPolls until the others' are (their work asks Stop() too, which off the calling
+// thread only reads an earlier cancel).
+template <class Body>
+void ParallelPieces(long n, Body &&body, bool parallel = true, const Interrupt *whileWaiting = nullptr) {
   using B = std::remove_reference_t<Body>;
-  detail::RunPieces(n, parallel, &body,
-                    [](const void *b, long begin, long end) { (*static_cast<B *>(const_cast<void *>(b)))(begin, end); });
+  detail::RunPieces(
+      n, parallel, &body, [](const void *b, long begin, long end) { (*static_cast<B *>(const_cast<void *>(b)))(begin, end); },
+      whileWaiting);
 }
 
 // Calls fn(i) for every i in [0, n), as ParallelPieces.
-template <class Fn> void ParallelFor(long n, Fn &&fn, bool parallel = true) {
+template <class Fn> void ParallelFor(long n, Fn &&fn, bool parallel = true, const Interrupt *whileWaiting = nullptr) {
   ParallelPieces(
       n,
       [&fn](long begin, long end) {
         for (long i = begin; i < end; ++i) fn(i);
       },
-      parallel);
-}
-
-// As ParallelFor, for a few long pieces of work (one index each): the calling thread, its
-// own done, asks whileWaiting.Stop() every kWaitBetweenPolls until the others' are (their
-// work asks Stop() too, which off the calling thread only reads an earlier cancel).
-template <class Fn> void ParallelFor(long n, Fn &&fn, const Interrupt &whileWaiting) {
-  auto body = [&fn](long begin, long end) {
-    for (long i = begin; i < end; ++i) fn(i);
-  };
-  detail::RunPieces(
-      n, true, &body, [](const void *b, long begin, long end) { (*static_cast<const decltype(body) *>(b))(begin, end); },
-      &whileWaiting);
+      parallel, whileWaiting);
 }
 
 } // namespace eulermap

@@ -268,7 +268,7 @@ Fields SignedDistanceFields(const Meshes &m, const Grid &grid, bool sampleLevels
         else
           s.f1 = SignedDistance(m.placed, grid, &s.gradient1, interrupt);
       },
-      interrupt);
+      true, &interrupt);
   if (interrupt.Cancelled()) throw Error("cancelled");
   RequireInside(s.f0, "source");
   RequireInside(s.f1, "target");

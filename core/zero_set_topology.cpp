@@ -327,13 +327,11 @@ InsideSetTracker::State::State(const ScalarField &first, const std::function<voi
     : grid(first.grid), lattice(first.grid) {
   // The per-node arrays filled a piece at a time with a poll after each (interrupt.h: the
   // kernel clears fresh pages at their first touch; at 384^3 they took a second unpolled).
-  const Interrupt interrupt([&poll] {
-    if (poll) poll();
-    return true;
-  });
-  inside = InsideSet(first, interrupt);
-  FillPolling(value, first.values.size(), [&first](std::size_t n) { return first.values[n]; }, interrupt);
-  AssignPolling(mark, first.values.size(), -1, interrupt);
+  const HeldThrow reporting(poll);
+  inside = InsideSet(first, reporting.interrupt());
+  FillPolling(value, first.values.size(), [&first](std::size_t n) { return first.values[n]; }, reporting.interrupt());
+  AssignPolling(mark, first.values.size(), -1, reporting.interrupt());
+  reporting.Rethrow();
   Labelling l = Label(lattice, inside, poll);
   label = std::move(l.label);
   components = l.components;

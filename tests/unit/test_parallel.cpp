@@ -158,7 +158,7 @@ TEST(Parallel, ACallerWaitingForTheOthersAsksItsInterruptOnItsThread) {
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
           }
         },
-        interrupt);
+        true, &interrupt);
     ASSERT_TRUE(otherStarted) << "the pool's thread never took the second piece";
     EXPECT_EQ(callsElsewhere, 0);
     if (cancel) {
