@@ -6,8 +6,8 @@
 //                                                          one of the four Table 1 rows (N = 1..4)
 //   eulermap_bench grid CELLS [--threads T]                sphere -> ellipsoid on a grid of CELLS^3 nodes
 //   eulermap_bench load N                                   row N quiet, then beside one CPU-bound process per
-//                                                           core, at nice 0 and at nice 10: the wall times and
-//                                                           their ratios
+//                                                           core, at nice 0 and at nice 10, 3 rounds: the wall
+//                                                           times, their medians and the medians' ratios
 //   eulermap_bench vertices S                               sphere of S subdivisions -> ellipsoid, 64 cells
 //   eulermap_bench soup S                                   sphere of S subdivisions -> torus, 64 cells, welded
 //                                                           and as a triangle soup (every face its own vertices)
@@ -219,17 +219,31 @@ int main(int argc, char **argv) {
       // (nice 10, as a background build in this session), with OpenMP's settings as the
       // environment leaves them (tests/bench/run unsets OMP_WAIT_POLICY): the team's loops
       // must not wait for a member the scheduler took off its core (parallel.h).
+      // Rounds of the three, alternated, and their medians: this shared machine's speed drifts
+      // by the minute (one round's ratio ranged 1.97-2.33 over a day with the same code).
       const int n = std::atoi(argv[2]);
       const int cores = int(sysconf(_SC_NPROCESSORS_ONLN));
+      constexpr int kRounds = 3;
       double strength;
-      const double quiet = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
-      std::printf("load: Table 1 row %d, %.2f s quiet (%d threads)\n", n, quiet, result.report.threads);
-      for (const int nice : {0, 10}) {
-        double busy;
-        {
+      std::vector<double> times[3];  // quiet, nice 0, nice 10
+      for (int round = 0; round < kRounds; ++round) {
+        times[0].push_back(Wall([&] { MapRow(n, argc, argv, options, result, strength); }));
+        for (const int nice : {0, 10}) {
           const BusyProcesses load(cores, nice);
-          busy = Wall([&] { MapRow(n, argc, argv, options, result, strength); });
+          times[nice ? 2 : 1].push_back(Wall([&] { MapRow(n, argc, argv, options, result, strength); }));
         }
+        std::printf("load: round %d: %.2f s quiet, %.2f s beside %d busy processes at nice 0, %.2f s at nice 10\n",
+                    round + 1, times[0].back(), times[1].back(), cores, times[2].back());
+      }
+      auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+      };
+      const double quiet = median(times[0]);
+      std::printf("load: Table 1 row %d, %.2f s quiet (%d threads; medians of %d rounds)\n", n, quiet,
+                  result.report.threads, kRounds);
+      for (const int nice : {0, 10}) {
+        const double busy = median(times[nice ? 2 : 1]);
         std::printf("load: Table 1 row %d, %.2f s beside %d busy processes at nice %d (%d threads): %.2f "
                     "times quiet\n",
                     n, busy, cores, nice, result.report.threads, busy / quiet);
