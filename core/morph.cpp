@@ -11,6 +11,7 @@
 
 #include "eigen_point.h"
 #include "grow_shrink.h"
+#include "inflate_shrink.h"
 #include "parallel.h"
 #include "union_find.h"
 
@@ -166,6 +167,7 @@ struct Morph::Impl {
   Mode mode = Mode::LinearBlend;
   std::string reason;  // why the linear blend was chosen
   std::unique_ptr<GrowShrink> growShrink;  // Mode::GrowShrink
+  std::unique_ptr<InflateShrink> inflateShrink;  // Mode::InflateShrink
 
   // ARAP data, all from the source tetrahedra (Alexa et al. 2000).
   struct Tet {
@@ -494,6 +496,10 @@ Morph::Morph(const ScalarField &f0, const ScalarField &f1, std::vector<Point3> a
     impl_->growShrink = std::make_unique<GrowShrink>(f0, f1);
     impl_->mode = Mode::GrowShrink;
   }
+  if (impl_->mode == Mode::LinearBlend && blend == Blend::InflateShrink) {
+    impl_->inflateShrink = std::make_unique<InflateShrink>(f0, f1);
+    impl_->mode = Mode::InflateShrink;
+  }
 }
 
 Morph::~Morph() = default;
@@ -509,6 +515,13 @@ std::string Morph::Describe() const {
     s << "grow then withdraw (" << m.reason << "; the linear blend grows parts from nothing): the source grows "
       << m.growShrink->GrowLength() << " into the target, then withdraws " << m.growShrink->WithdrawLength()
       << ", switching at t = " << m.growShrink->Switch();
+    return s.str();
+  }
+  if (m.mode == Mode::InflateShrink) {
+    std::ostringstream s;
+    s << "inflate then shrink (" << m.reason << "; the linear blend grows parts from nothing): the source inflates "
+      << m.inflateShrink->InflateLength() << " until it holds the target, then shrinks up to "
+      << m.inflateShrink->ShrinkLength() << " onto it, switching at t = " << m.inflateShrink->Switch();
     return s.str();
   }
   std::ostringstream s;
@@ -534,6 +547,7 @@ void Morph::Frame(double t, ScalarField &out, const Interrupt &interrupt) const 
   const long long count = (long long)g.NodeCount();
 
   if (impl_->mode == Mode::GrowShrink) return impl_->growShrink->Frame(t, out);
+  if (impl_->mode == Mode::InflateShrink) return impl_->inflateShrink->Frame(t, out);
   if (impl_->mode == Mode::LinearBlend) {  // W = identity
     ParallelFor(count, [&](long i) {
       double v = 0;

@@ -12,8 +12,8 @@
 //     thin-plate (phi(r) = r, plus affine part) warps W_t->0, W_t->1 with
 //     W_t->0(q_i(t)) = a_i and W_t->1(q_i(t)) = b_i.
 // Without a warp (fewer than 4 anchors), Blend::GrowShrink replaces the linear blend with
-// grow_shrink.h's morph, in which no part grows from nothing (the pipeline asks for it when
-// the linear blend would grow one).
+// grow_shrink.h's morph, and Blend::InflateShrink with inflate_shrink.h's, in which no part
+// grows from nothing (the pipeline asks for them when the linear blend would grow one).
 #pragma once
 
 #include "field.h"
@@ -27,8 +27,8 @@ namespace eulermap {
 
 class Morph {
  public:
-  enum class Mode { LinearBlend, ArapTps, GrowShrink };
-  enum class Blend { Linear, GrowShrink };  // what to do where no warp is built
+  enum class Mode { LinearBlend, ArapTps, GrowShrink, InflateShrink };
+  enum class Blend { Linear, GrowShrink, InflateShrink };  // what to do where no warp is built
 
   // f0, f1 on the same grid; anchors as matched lists (a[i] <-> b[i]), b already placed.
   // f0 and f1 are not copied: they must outlive the Morph.

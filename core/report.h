@@ -112,7 +112,7 @@ struct Report {
   int anchors = 0;
   std::string morphMode;    // Morph::Describe()
   std::string placement;    // how the target was placed in the source's frame
-  std::string morphsTried;  // where a first map failed and the other morph was tried: both maps' figures
+  std::string morphsTried;  // where a first map failed and other morphs were tried: each map's figures
   std::string placementsTried;  // where the map at centre-and-scale failed and the overlap placement was tried
   std::string solver;       // the velocity solver (VelocitySolver::Method)
   int threads = 1;
