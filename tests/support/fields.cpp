@@ -11,6 +11,25 @@ ScalarField Sampled(const Grid &g, const std::function<double(const Point3 &)> &
   return out;
 }
 
+std::function<double(const Point3 &)> Ball(const Point3 &c, double r) {
+  return [=](const Point3 &p) { return vcg::Distance(p, c) - r; };
+}
+
+std::vector<char> Inside(const ScalarField &f) {
+  std::vector<char> in(f.values.size());
+  for (std::size_t n = 0; n < in.size(); ++n) in[n] = f.values[n] < 0;
+  return in;
+}
+
+BallScene::BallScene(double xa, double ra, double xb, double rb) {
+  g.origin = Point3(-2, -1.2, -1.2);
+  g.h = 0.1;
+  g.dims = vcg::Point3i(41, 25, 25);
+  f0 = Sampled(g, Ball(Point3(-1.1, 0, 0), 0.6));
+  const auto a = Ball(Point3(xa, 0, 0), ra), b = Ball(Point3(xb, 0, 0), rb);
+  f1 = Sampled(g, [=](const Point3 &p) { return std::min(a(p), b(p)); });
+}
+
 VectorField LinearField(const double A[3][3], const Point3 &c) {
   Grid g;
   g.origin = Point3(-1, -1, -1);

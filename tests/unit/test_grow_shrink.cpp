@@ -15,6 +15,8 @@
 #include <limits>
 
 using namespace eulermap;
+using eulermap::testing::Ball;
+using eulermap::testing::Inside;
 using eulermap::testing::Sampled;
 
 namespace {
@@ -24,17 +26,6 @@ Grid Cube(int nodes, double h = 1) {
   g.h = h;
   g.dims = vcg::Point3i(nodes, nodes, nodes);
   return g;
-}
-
-// Nodes inside a sphere (negative), as a distance-like field.
-std::function<double(const Point3 &)> Ball(const Point3 &c, double r) {
-  return [=](const Point3 &p) { return vcg::Distance(p, c) - r; };
-}
-
-std::vector<char> Inside(const ScalarField &f) {
-  std::vector<char> in(f.values.size());
-  for (std::size_t n = 0; n < in.size(); ++n) in[n] = f.values[n] < 0;
-  return in;
 }
 
 // The 26-neighbour path length from node 0 to (a, b, c) in a grid with every node in G.
@@ -85,17 +76,8 @@ TEST(GrowShrink, ADiagonalStepNeedsAPathOfEdgesThroughG) {
 
 // X0: a ball on the left; X1: a ball overlapping it and, beyond, another that touches only
 // the first target ball (the linear blend would give it birth).
-struct Balls {
-  Grid g;
-  ScalarField f0, f1;
-  Balls() {
-    g.origin = Point3(-2, -1.2, -1.2);
-    g.h = 0.1;
-    g.dims = vcg::Point3i(41, 25, 25);
-    f0 = Sampled(g, Ball(Point3(-1.1, 0, 0), 0.6));
-    const auto a = Ball(Point3(-0.3, 0, 0), 0.5), b = Ball(Point3(0.7, 0, 0), 0.65);
-    f1 = Sampled(g, [=](const Point3 &p) { return std::min(a(p), b(p)); });
-  }
+struct Balls : eulermap::testing::BallScene {
+  Balls() : BallScene(-0.3, 0.5, 0.7, 0.65) {}
 };
 
 TEST(GrowShrink, TheEndsAndTheSwitchHoldX0X0uX1AndX1) {

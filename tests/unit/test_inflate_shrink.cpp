@@ -12,33 +12,16 @@
 #include <functional>
 
 using namespace eulermap;
+using eulermap::testing::Ball;
+using eulermap::testing::Inside;
 using eulermap::testing::Sampled;
 
 namespace {
 
-std::function<double(const Point3 &)> Ball(const Point3 &c, double r) {
-  return [=](const Point3 &p) { return vcg::Distance(p, c) - r; };
-}
-
-std::vector<char> Inside(const ScalarField &f) {
-  std::vector<char> in(f.values.size());
-  for (std::size_t n = 0; n < in.size(); ++n) in[n] = f.values[n] < 0;
-  return in;
-}
-
 // X0: a ball on the left; X1: a ball overlapping it and, 0.4 beyond it, a ball that touches
 // neither (the linear blend gives it birth).
-struct Balls {
-  Grid g;
-  ScalarField f0, f1;
-  Balls() {
-    g.origin = Point3(-2, -1.2, -1.2);
-    g.h = 0.1;
-    g.dims = vcg::Point3i(41, 25, 25);
-    f0 = Sampled(g, Ball(Point3(-1.1, 0, 0), 0.6));
-    const auto a = Ball(Point3(-0.6, 0, 0), 0.4), b = Ball(Point3(0.9, 0, 0), 0.5);
-    f1 = Sampled(g, [=](const Point3 &p) { return std::min(a(p), b(p)); });
-  }
+struct Balls : eulermap::testing::BallScene {
+  Balls() : BallScene(-0.6, 0.4, 0.9, 0.5) {}
 };
 
 TEST(InflateShrink, TheEndsHoldX0AndX1AndTheSwitchHoldsX1InsideTheGrid) {
