@@ -327,7 +327,7 @@ void Deform(const Morph &morph, const Fields &fields, const Options &options, co
     rep.solverFigures.maxFinalResidual = std::max(rep.solverFigures.maxFinalResidual, s.residual);
     t0 = Clock::now();
     tracker.Advance(V, fNext, dt);  // DEF: Eq. 7
-    surgery.Step(k, surgery.Acts(k) ? FindSaddles(V) : std::vector<Saddle>(), fNext, tracker);
+    surgery.Step(k, surgery.Acts(k) ? FindSaddles(V) : std::vector<Saddle>(), fCur, fNext, tracker);
     rep.times.deform += Seconds(t0);
     std::swap(fCur, fNext);
   }

@@ -84,6 +84,7 @@ enum class EventCut {
   Undone,           // an opposite event nearby soon undid it (surgery_plan.h)
   SourceGrid,       // f0's inside set has a feature the source mesh has not; this removed it
   TargetGrid,       // f1's inside set has a feature the target mesh has not; this made it
+  Cancelled,        // an opposite event of the morph, left beyond the net change, cancels it (surgery_plan.h)
 };
 struct EventSurgery {
   int event = 0;              // index into Report::topologyEvents

@@ -16,6 +16,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
@@ -42,6 +43,64 @@ bool FarFromBox(const Point3 &p, double r, const Point3 &a, const Point3 &b, con
     if (std::min({a[x], b[x], c[x]}) > p[x] + r || std::max({a[x], b[x], c[x]}) < p[x] - r) return true;
   return false;
 }
+
+// The nodes a step sweeps into the inside set around an event at x: f(., t_k) >= 0 and
+// f(., t_k+1) < 0, joined through 6-neighbours to the swept node nearest x (within
+// kSweptSeekCells). Where two sheets meet at a point (spheres merging) it is a few nodes
+// around x; where flat fronts meet across a whole section (the rails of chair -> chair_rails
+// growing from both legs) it is the slab between them, the section's size.
+class Swept {
+ public:
+  Swept(const Point3 &x, const ScalarField &fCur, const ScalarField &fNext) : grid_(fNext.grid) {
+    const Grid &g = grid_;
+    auto swept = [&](std::size_t n) { return fCur.values[n] >= 0 && fNext.values[n] < 0; };
+    const Point3 c = g.ToGrid(x);
+    const int r = int(kSweptSeekCells);
+    long seed = -1;
+    double nearest = kSweptSeekCells * kSweptSeekCells + 1;
+    for (int k = int(std::floor(c.Z())) - r; k <= int(std::ceil(c.Z())) + r; ++k)
+      for (int j = int(std::floor(c.Y())) - r; j <= int(std::ceil(c.Y())) + r; ++j)
+        for (int i = int(std::floor(c.X())) - r; i <= int(std::ceil(c.X())) + r; ++i) {
+          if (!Inside(i, j, k) || !swept(g.Index(i, j, k))) continue;
+          const double d = (Point3(i, j, k) - c).SquaredNorm();
+          if (d < nearest) nearest = d, seed = long(g.Index(i, j, k));
+        }
+    if (seed < 0) return;
+    std::vector<std::size_t> stack = {std::size_t(seed)};
+    nodes_.insert(std::size_t(seed));
+    const long nx = g.dims.X(), nxy = nx * g.dims.Y();
+    while (!stack.empty()) {
+      const std::size_t n = stack.back();
+      stack.pop_back();
+      const int i = int(n % nx), j = int(n / nx % g.dims.Y()), k = int(n / nxy);
+      const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+      for (const auto &d : step) {
+        if (!Inside(i + d[0], j + d[1], k + d[2])) continue;
+        const std::size_t m = g.Index(i + d[0], j + d[1], k + d[2]);
+        if (swept(m) && nodes_.insert(m).second) stack.push_back(m);
+      }
+    }
+  }
+  // Whether a corner of the cell holding p was swept.
+  bool Touches(const Point3 &p) const {
+    if (nodes_.empty()) return false;
+    const Point3 c = grid_.ToGrid(p);
+    const int i = int(std::floor(c.X())), j = int(std::floor(c.Y())), k = int(std::floor(c.Z()));
+    for (int dz = 0; dz < 2; ++dz)
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx)
+          if (Inside(i + dx, j + dy, k + dz) && nodes_.count(grid_.Index(i + dx, j + dy, k + dz))) return true;
+    return false;
+  }
+
+ private:
+  static constexpr double kSweptSeekCells = 2;
+  bool Inside(int i, int j, int k) const {
+    return i >= 0 && j >= 0 && k >= 0 && i < grid_.dims.X() && j < grid_.dims.Y() && k < grid_.dims.Z();
+  }
+  const Grid &grid_;
+  std::unordered_set<std::size_t> nodes_;
+};
 
 double Area(const Point3 &a, const Point3 &b, const Point3 &c) { return ((b - a) ^ (c - a)).Norm() / 2; }
 
@@ -136,7 +195,8 @@ bool Surgery::Acts(int k) const {
   return false;
 }
 
-void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField &fNext, Tracker &tracker) {
+void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField &fCur, const ScalarField &fNext,
+                   Tracker &tracker) {
   const std::size_t begin = next_;
   while (next_ < events_.size() && events_[next_].step <= k) ++next_;
   std::vector<Point3> position = Positions(tracker.Points());
@@ -183,6 +243,13 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
         outcome.outcome = EventCut::OneSheetTracked;
       } else {
         for (int n : InSphere(event.position, position)) faces.push_back(n);
+        // (c) where sheets meet at the event's own step, each disc grows over the faces
+        // that lie where the step swept the gap between them (Swept).
+        if (shape == CutShape::Discs && outcome.stepsLate == 0) {
+          const Swept swept(event.position, fCur, fNext);
+          const std::vector<int> grown = Spread(faces, [&](const Point3 &p) { return swept.Touches(p); }, position);
+          faces.insert(faces.end(), grown.begin(), grown.end());
+        }
         for (int n : faces)
           if (tris_[n].state == kAlive) tris_[n].state = outcome.event;
         cutting.push_back({outcome.event, event.position});
@@ -347,6 +414,26 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
   }
   if (seed < 0) return cut;
   return ConnectedFrom(seed, faces);
+}
+
+std::vector<int> Surgery::Spread(const std::vector<int> &seeds, const std::function<bool(const Point3 &)> &near,
+                                 const std::vector<Point3> &position) const {
+  const EdgeFaces faces = AliveEdges();
+  std::unordered_set<int> seen(seeds.begin(), seeds.end());
+  std::vector<int> stack(seeds.begin(), seeds.end()), grown;
+  while (!stack.empty()) {
+    const Tri &t = tris_[stack.back()];
+    stack.pop_back();
+    for (int e = 0; e < 3; ++e)
+      for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3])) {
+        const Tri &u = tris_[m];
+        if (!seen.insert(m).second || !near(position[u.v[0]]) || !near(position[u.v[1]]) || !near(position[u.v[2]]))
+          continue;
+        grown.push_back(m);
+        stack.push_back(m);
+      }
+  }
+  return grown;
 }
 
 std::vector<int> Surgery::ConnectedFrom(int seed, const EdgeFaces &faces) const {

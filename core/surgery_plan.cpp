@@ -1,7 +1,10 @@
 #include "surgery_plan.h"
 
+#include "cut_axis.h"
+
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace eulermap {
 
@@ -40,6 +43,36 @@ void MarkExcess(const std::vector<TopologyEvent> &events, std::vector<EventCut> 
   }
 }
 
+// Whether surgery cuts at an event of this kind (cut_axis.h: two sheets meeting, or a neck
+// pinching); births, deaths and cavities are not cut.
+bool CutKind(TopologyEventKind kind) { return ShapeOf(kind) != CutShape::None; }
+
+// Cancelled: the Planned cut-kind events of opposite sign of one feature, paired off, the
+// nearest in steps first and then in place, until one sign is left.
+void CancelOpposites(const std::vector<TopologyEvent> &events, std::vector<EventCut> &plan, int betti) {
+  std::vector<int> created, destroyed;
+  for (int e = 0; e < int(events.size()); ++e) {
+    const Feature f = FeatureOf(events[e].kind);
+    if (plan[e] == EventCut::Planned && f.betti == betti && CutKind(events[e].kind))
+      (f.sign > 0 ? created : destroyed).push_back(e);
+  }
+  struct Candidate {
+    int steps;
+    double distance;
+    int a, b;
+  };
+  std::vector<Candidate> pairs;
+  for (int a : created)
+    for (int b : destroyed)
+      pairs.push_back({std::abs(events[a].step - events[b].step), vcg::Distance(events[a].position, events[b].position),
+                       a, b});
+  std::sort(pairs.begin(), pairs.end(), [](const Candidate &x, const Candidate &y) {
+    return std::tie(x.steps, x.distance, x.a, x.b) < std::tie(y.steps, y.distance, y.a, y.b);
+  });
+  for (const Candidate &c : pairs)
+    if (plan[c.a] == EventCut::Planned && plan[c.b] == EventCut::Planned) plan[c.a] = plan[c.b] = EventCut::Cancelled;
+}
+
 } // namespace
 
 std::vector<EventCut> PlanSurgery(const std::vector<TopologyEvent> &events, const TopologyFrame &first,
@@ -72,6 +105,9 @@ std::vector<EventCut> PlanSurgery(const std::vector<TopologyEvent> &events, cons
   MarkExcess(events, plan, 1, -1, first.handles - sourceMesh.Genus(), true, EventCut::SourceGrid);
   MarkExcess(events, plan, 0, +1, last.components - targetMesh.components, false, EventCut::TargetGrid);
   MarkExcess(events, plan, 1, +1, last.handles - targetMesh.Genus(), false, EventCut::TargetGrid);
+  // What is left beyond the net change of components and handles.
+  CancelOpposites(events, plan, 0);
+  CancelOpposites(events, plan, 1);
   return plan;
 }
 

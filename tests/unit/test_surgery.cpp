@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace eulermap;
@@ -33,7 +34,7 @@ TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
                                              EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)};
   Surgery surgery(sphere, cell, cell, events, std::vector<EventCut>(events.size(), EventCut::Planned), false);
   EXPECT_TRUE(surgery.Acts(0));
-  surgery.Step(0, {}, f, tracker);
+  surgery.Step(0, {}, f, f, tracker);
   ASSERT_EQ(surgery.Outcomes().size(), 3u);
   EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
   EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::NotACutKind);
@@ -66,10 +67,12 @@ TEST(Surgery, EventWaitsForTheTrackedSurfaceComingNearer) {
   const std::vector<TopologyEvent> events = {EventAt(g, {12, 12, 12}, TopologyEventKind::HandleGained),  // 9.9 cells away
                                              EventAt(g, {1, 1, 14}, TopologyEventKind::HandleGained)};   // 8.4, then 15.7
   Surgery surgery(sphere, g.h, g.h, events, std::vector<EventCut>(events.size(), EventCut::Planned), false);
-  surgery.Step(0, {}, Quadric(g, g.Node(5, 5, 5), Point3(-1, -1, 1)), before);
+  const ScalarField atStart = Quadric(g, g.Node(5, 5, 5), Point3(-1, -1, 1));
+  const ScalarField onFirst = Quadric(g, g.Node(12, 12, 12), Point3(-1, -1, 1));
+  surgery.Step(0, {}, atStart, atStart, before);
   EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::AwayFromSurface);
   EXPECT_TRUE(surgery.Acts(1));  // both wait
-  surgery.Step(1, {}, Quadric(g, g.Node(12, 12, 12), Point3(-1, -1, 1)), after);  // the sphere moved onto the first
+  surgery.Step(1, {}, onFirst, onFirst, after);  // the sphere moved onto the first
   EXPECT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
   EXPECT_EQ(surgery.Outcomes()[0].stepsLate, 1);
   EXPECT_EQ(surgery.Outcomes()[1].outcome, EventCut::AwayFromSurface);
@@ -95,7 +98,7 @@ TEST(Surgery, PinchingNeckLosesABand) {
   const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
   const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
   Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned}, false);
-  surgery.Step(0, {}, f, tracker);
+  surgery.Step(0, {}, f, f, tracker);
   ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
   Mesh cut;
   std::vector<EventSurgery> outcomes;
@@ -104,6 +107,46 @@ TEST(Surgery, PinchingNeckLosesABand) {
   EXPECT_EQ(t.components, 1);
   EXPECT_EQ(t.boundaryLoops, 2);
   EXPECT_EQ(t.eulerCharacteristic, 0);
+}
+
+// Flat fronts meeting across a whole section (the rails of chair -> chair_rails growing from
+// both legs): two bars whose flat ends face each other 2 cells apart merge in one step, and
+// each loses its whole end, the nodes the step swept reaching across the section; with no
+// sweep (the same field before and after) only a disc of the hole radius goes.
+TEST(Surgery, FlatFrontsMeetingLoseTheSectionTheStepSwept) {
+  const Grid g = Grid::Enclosing(Box3(Point3(-1, -1, -1), Point3(1, 1, 1)), 40);  // cells of 0.05
+  const Box3 left(Point3(-0.9, -0.2, -0.2), Point3(-0.05, 0.2, 0.2)), right(Point3(0.05, -0.2, -0.2), Point3(0.9, 0.2, 0.2));
+  const Box3 joined(Point3(-0.9, -0.2, -0.2), Point3(0.9, 0.2, 0.2));
+  auto bars = [&](const Point3 &p) { return std::min(BoxSignedDistance(left, p), BoxSignedDistance(right, p)); };
+  Mesh source;
+  MakeImplicit(source, bars, Box3(Point3(-1, -0.3, -0.3), Point3(1, 0.3, 0.3)), 80);
+  const ScalarField apart = Sampled(g, bars), met = Sampled(g, [&](const Point3 &p) { return BoxSignedDistance(joined, p); });
+  const vcg::Point3i node(int(std::lround(g.ToGrid(Point3(0, 0, 0)).X())), int(std::lround(g.ToGrid(Point3(0, 0, 0)).Y())),
+                          int(std::lround(g.ToGrid(Point3(0, 0, 0)).Z())));
+  const TopologyEvent merged = EventAt(g, node, TopologyEventKind::PartsMerged);
+  const std::vector<Saddle> saddles = {{merged.position, 2, Point3(1, 0, 0)}};  // the fronts arrive along x
+  std::vector<Point3> points;
+  for (const Vertex &v : source.vert) points.push_back(v.cP());
+  double rims[2];
+  for (int swept = 0; swept < 2; ++swept) {
+    Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+    Surgery surgery(source, g.h, g.h, {merged}, {EventCut::Planned}, false);
+    surgery.Step(0, saddles, swept ? apart : met, met, tracker);
+    ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
+    Mesh cut;
+    std::vector<EventSurgery> outcomes;
+    surgery.Build(source, tracker.Points(), cut, outcomes);
+    const Topology t = MeasureTopology(cut);  // each bar loses one disc
+    EXPECT_EQ(t.components, 2);
+    EXPECT_EQ(t.boundaryLoops, 2);
+    EXPECT_EQ(t.eulerCharacteristic, 2);
+    rims[swept] = outcomes[0].rimLength;
+    if (swept)  // nothing is left of either end inside the section
+      for (const Vertex &v : cut.vert)
+        if (!v.IsD() && std::abs(v.cP().X()) < 0.06) EXPECT_GT(std::max(std::abs(v.cP().Y()), std::abs(v.cP().Z())), 0.15);
+  }
+  EXPECT_LT(rims[0], 2 * 2 * M_PI * 2 * g.h);  // two rims about the hole radius round: 0.90
+  EXPECT_GT(rims[1], 2 * rims[0]);             // two rims most of the section's perimeter (1.6) round: 1.99
 }
 
 // Stretched edges are split only where both ends still follow f = 0: a tracked point left
@@ -122,7 +165,7 @@ TEST(Surgery, StretchedEdgesAreSplitOnlyWhereTheirEndsKeepTheirLevel) {
         for (int i = 0; i < g.dims.X(); ++i) f(i, j, k) = g.Node(i, j, k).Norm() - radius;
     Tracker tracker(points, std::vector<double>(points.size(), 0.0));
     Surgery surgery(source, g.h, g.h, {}, {}, true);  // splits stretched edges from the start
-    surgery.Step(0, {}, f, tracker);
+    surgery.Step(0, {}, f, f, tracker);
     Mesh cut;
     std::vector<EventSurgery> outcomes;
     surgery.Build(source, tracker.Points(), cut, outcomes);

@@ -1,5 +1,6 @@
 // Which topology events surgery acts on (surgery_plan.h): events undone soon and nearby,
-// and the grid's own features at either end of the morph, are not cut.
+// the grid's own features at either end of the morph, and opposite events beyond the net
+// change are not cut.
 #include "core/surgery_plan.h"
 
 #include <gtest/gtest.h>
@@ -29,14 +30,37 @@ TEST(SurgeryPlan, EventsUndoneSoonNearbyAreNotCut) {
       EventAtStep(3, 0, K::PartSplit),     EventAtStep(5, 2, K::ComponentDied),  // undone
       EventAtStep(10, 30, K::HandleGained), EventAtStep(11, 31, K::HandleLost),  // undone
       EventAtStep(12, 60, K::HandleGained),                                      // stays
-      EventAtStep(20, 30, K::HandleLost),  // the gain there was undone already; the open one is 30 cells away
-      EventAtStep(21, 90, K::PartsMerged), EventAtStep(22, 90 + kUndoneCells + 1, K::PartSplit),  // too far apart
+      EventAtStep(20, 31, K::HandleGained),  // the handle there was undone already: stays
   };
-  const TopologyFrame frame{-1, 1, 0, 0};
-  const Topology sphere{1, 0, 2};
-  const std::vector<EventCut> plan = PlanSurgery(events, frame, frame, sphere, sphere, 1.0, 40);
-  const std::vector<EventCut> expected = {EventCut::Undone,  EventCut::Undone,  EventCut::Undone,  EventCut::Undone,
-                                          EventCut::Planned, EventCut::Planned, EventCut::Planned, EventCut::Planned};
+  const TopologyFrame first{-1, 1, 0, 0}, last{39, 1, 2, 0};
+  const Topology sphere{1, 0, 2}, genus2{1, 0, -2};
+  const std::vector<EventCut> plan = PlanSurgery(events, first, last, sphere, genus2, 1.0, 40);
+  const std::vector<EventCut> expected = {EventCut::Undone, EventCut::Undone,  EventCut::Undone,
+                                          EventCut::Undone, EventCut::Planned, EventCut::Planned};
+  EXPECT_EQ(plan, expected);
+}
+
+// Cut kinds of opposite sign left beyond the net change cancel, whatever their distance:
+// a window opening at the bottom and closing at the top 26 cells above within one step, a
+// merge and a split farther apart than kUndoneCells; nearest in steps first (the gain at
+// step 30 goes with the loss at step 31, not the one at step 20). A part born from nothing
+// is not cut, so the merge that joins it to the surface stays.
+TEST(SurgeryPlan, OppositeEventsBeyondTheNetChangeCancel) {
+  using K = TopologyEventKind;
+  const std::vector<TopologyEvent> events = {
+      EventAtStep(5, 200, K::ComponentBorn),                                               // not a cut kind
+      EventAtStep(14, 0, K::HandleGained),  EventAtStep(14, 26, K::HandleLost),            // cancelled
+      EventAtStep(20, 100, K::HandleGained),                                               // the net change
+      EventAtStep(21, 150, K::PartsMerged), EventAtStep(22, 150 + kUndoneCells + 1, K::PartSplit),  // cancelled
+      EventAtStep(25, 200, K::PartsMerged),                                                // the born part joins
+      EventAtStep(30, 50, K::HandleGained), EventAtStep(31, 80, K::HandleLost),            // cancelled
+  };
+  const TopologyFrame first{-1, 1, 0, 0}, last{39, 1, 1, 0};
+  const Topology sphere{1, 0, 2}, torus{1, 0, 0};
+  const std::vector<EventCut> plan = PlanSurgery(events, first, last, sphere, torus, 1.0, 40);
+  const std::vector<EventCut> expected = {EventCut::Planned,   EventCut::Cancelled, EventCut::Cancelled,
+                                          EventCut::Planned,   EventCut::Cancelled, EventCut::Cancelled,
+                                          EventCut::Planned,   EventCut::Cancelled, EventCut::Cancelled};
   EXPECT_EQ(plan, expected);
 }
 
