@@ -152,8 +152,8 @@ std::string Report::ToText() const {
         o << Format(": not cut, the tracked surface is %.1f cells away (a part no tracked point reaches)", s.distanceCells);
       else if (s.outcome == EventCut::Undone)
         o << ": not cut, an opposite event nearby undoes it";
-      else if (s.outcome == EventCut::Cancelled)
-        o << ": not cut, an opposite event of the morph cancels it (beyond the net change the target needs)";
+      else if (s.outcome == EventCut::BetweenFrames)
+        o << ": not cut, an opposite event of the same step undoes it (no frame holds the feature)";
       else if (s.outcome == EventCut::SourceGrid)
         o << ": not cut, it removes a feature of the grid's picture of the source that the source mesh has not";
       else if (s.outcome == EventCut::TargetGrid)

@@ -47,30 +47,26 @@ void MarkExcess(const std::vector<TopologyEvent> &events, std::vector<EventCut> 
 // pinching); births, deaths and cavities are not cut.
 bool CutKind(TopologyEventKind kind) { return ShapeOf(kind) != CutShape::None; }
 
-// Cancelled: the Planned cut-kind events of opposite sign of one feature, paired off, the
-// nearest in steps first and then in place, until one sign is left.
-void CancelOpposites(const std::vector<TopologyEvent> &events, std::vector<EventCut> &plan, int betti) {
-  std::vector<int> created, destroyed;
-  for (int e = 0; e < int(events.size()); ++e) {
-    const Feature f = FeatureOf(events[e].kind);
-    if (plan[e] == EventCut::Planned && f.betti == betti && CutKind(events[e].kind))
-      (f.sign > 0 ? created : destroyed).push_back(e);
-  }
+// BetweenFrames: the cut-kind events of opposite sign of one feature within each step,
+// paired off nearest first.
+void PairWithinSteps(const std::vector<TopologyEvent> &events, std::vector<EventCut> &plan, int betti) {
   struct Candidate {
-    int steps;
     double distance;
     int a, b;
   };
   std::vector<Candidate> pairs;
-  for (int a : created)
-    for (int b : destroyed)
-      pairs.push_back({std::abs(events[a].step - events[b].step), vcg::Distance(events[a].position, events[b].position),
-                       a, b});
+  for (int a = 0; a < int(events.size()); ++a)
+    for (int b = 0; b < int(events.size()); ++b) {
+      const Feature f = FeatureOf(events[a].kind), g = FeatureOf(events[b].kind);
+      if (events[a].step == events[b].step && f.betti == betti && g.betti == betti && f.sign > 0 && g.sign < 0 &&
+          CutKind(events[a].kind) && CutKind(events[b].kind))
+        pairs.push_back({vcg::Distance(events[a].position, events[b].position), a, b});
+    }
   std::sort(pairs.begin(), pairs.end(), [](const Candidate &x, const Candidate &y) {
-    return std::tie(x.steps, x.distance, x.a, x.b) < std::tie(y.steps, y.distance, y.a, y.b);
+    return std::tie(x.distance, x.a, x.b) < std::tie(y.distance, y.a, y.b);
   });
   for (const Candidate &c : pairs)
-    if (plan[c.a] == EventCut::Planned && plan[c.b] == EventCut::Planned) plan[c.a] = plan[c.b] = EventCut::Cancelled;
+    if (plan[c.a] == EventCut::Planned && plan[c.b] == EventCut::Planned) plan[c.a] = plan[c.b] = EventCut::BetweenFrames;
 }
 
 } // namespace
@@ -79,11 +75,14 @@ std::vector<EventCut> PlanSurgery(const std::vector<TopologyEvent> &events, cons
                                   const TopologyFrame &last, const Topology &sourceMesh, const Topology &targetMesh,
                                   double cell, int steps) {
   std::vector<EventCut> plan(events.size(), EventCut::Planned);
+  PairWithinSteps(events, plan, 0);
+  PairWithinSteps(events, plan, 1);
   // Undone: each event with the nearest open opposite one close enough in place and time.
   const double reach = kUndoneCells * cell;
   const int window = std::max(1, int(std::lround(kUndoneTime * steps)));
   std::vector<int> open;  // events not paired yet, in time order
   for (int e = 0; e < int(events.size()); ++e) {
+    if (plan[e] != EventCut::Planned) continue;
     const Feature f = FeatureOf(events[e].kind);
     int best = -1;
     double nearest = reach;
@@ -105,9 +104,6 @@ std::vector<EventCut> PlanSurgery(const std::vector<TopologyEvent> &events, cons
   MarkExcess(events, plan, 1, -1, first.handles - sourceMesh.Genus(), true, EventCut::SourceGrid);
   MarkExcess(events, plan, 0, +1, last.components - targetMesh.components, false, EventCut::TargetGrid);
   MarkExcess(events, plan, 1, +1, last.handles - targetMesh.Genus(), false, EventCut::TargetGrid);
-  // What is left beyond the net change of components and handles.
-  CancelOpposites(events, plan, 0);
-  CancelOpposites(events, plan, 1);
   return plan;
 }
 

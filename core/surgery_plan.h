@@ -6,6 +6,13 @@
 // continuous map onto the target needs is the net change from the source mesh to the target
 // mesh (topology.h, NeededCut). Surgery acts on the events that make up that change and
 // passes over:
+//   BetweenFrames  a cut kind (handle gained or lost, parts merged or split) undone by an
+//               opposite one of the same step, however far apart: no frame the tracker sees
+//               holds the feature. A flat front crosses a gap within one step: the legs of
+//               an inflated table meet along their whole length, the window between two legs
+//               opening at the bottom and closing at the top 26 cells above (table -> chair
+//               at 96 cells); cut, each such pair left four loops the target does not
+//               explain. Within a step, the nearest pairs first.
 //   Undone      an event undone by an opposite one (the same kind of feature created then
 //               destroyed, or destroyed then created) within kUndoneCells and kUndoneTime of
 //               the morph. A part about a cell thick breaks up in digital noise (a bunny's ears
@@ -20,14 +27,6 @@
 //               with the mesh, not a change of the surface.
 //   TargetGrid  the same at the other end, f1's inside set against the target mesh: the
 //               last events left that create the excess (a cow's legs broken at 64 cells).
-//   Cancelled   what a continuous map needs is the net change of each feature (topology.h,
-//               NeededCut): cut kinds of opposite sign still left after the above (handles
-//               gained and lost, parts merged and split) cancel in pairs, nearest in time
-//               first, then in place, until one sign is left. A feature can form and go
-//               far apart: the legs of an inflated table meet along their whole length within
-//               one step, the window between two legs opening at the bottom and closing at
-//               the top 26 cells above (table -> chair at 96 cells); cut, each leaves two loops
-//               the target does not explain.
 // A grid that shows fewer features than a mesh has (a handle thinner than a cell, parts
 // that intersect each other) cannot be helped here: the pipeline then does not check the cut.
 #pragma once
@@ -45,8 +44,8 @@ constexpr double kUndoneTime = 0.15;  // ... and this near in t (a share of the 
 // in:  events: every event of the morph, in order (TopologyHistory::events); first, last:
 //      the topology of f(., 0) and f(., 1); sourceMesh, targetMesh: the meshes' own topology
 //      (topology.h, MeasureTopology); cell: the grid cell (world units); steps: K
-// out: per event, EventCut::Planned (surgery acts on it) or Undone / SourceGrid / TargetGrid /
-//      Cancelled
+// out: per event, EventCut::Planned (surgery acts on it) or BetweenFrames / Undone / SourceGrid /
+//      TargetGrid
 std::vector<EventCut> PlanSurgery(const std::vector<TopologyEvent> &events, const TopologyFrame &first,
                                   const TopologyFrame &last, const Topology &sourceMesh, const Topology &targetMesh,
                                   double cell, int steps);

@@ -1,6 +1,6 @@
 // Which topology events surgery acts on (surgery_plan.h): events undone soon and nearby,
-// the grid's own features at either end of the morph, and opposite events beyond the net
-// change are not cut.
+// opposite events of one step, and the grid's own features at either end of the morph are
+// not cut.
 #include "core/surgery_plan.h"
 
 #include <gtest/gtest.h>
@@ -40,27 +40,27 @@ TEST(SurgeryPlan, EventsUndoneSoonNearbyAreNotCut) {
   EXPECT_EQ(plan, expected);
 }
 
-// Cut kinds of opposite sign left beyond the net change cancel, whatever their distance:
-// a window opening at the bottom and closing at the top 26 cells above within one step, a
-// merge and a split farther apart than kUndoneCells; nearest in steps first (the gain at
-// step 30 goes with the loss at step 31, not the one at step 20). A part born from nothing
-// is not cut, so the merge that joins it to the surface stays.
-TEST(SurgeryPlan, OppositeEventsBeyondTheNetChangeCancel) {
+// Cut kinds of opposite sign within one step undo each other however far apart (a window
+// between two legs opening at the bottom and closing at the top 26 cells above), nearest
+// first (the gain at 0 goes with the loss at 26, not the one at 60); a merge and a split of
+// one step farther apart than kUndoneCells too. Opposite events of different steps that far
+// apart stay for surgery, and so does a merge whose opposite is a birth (not a cut kind).
+TEST(SurgeryPlan, OppositeEventsOfOneStepUndoEachOther) {
   using K = TopologyEventKind;
   const std::vector<TopologyEvent> events = {
-      EventAtStep(5, 200, K::ComponentBorn),                                               // not a cut kind
-      EventAtStep(14, 0, K::HandleGained),  EventAtStep(14, 26, K::HandleLost),            // cancelled
-      EventAtStep(20, 100, K::HandleGained),                                               // the net change
-      EventAtStep(21, 150, K::PartsMerged), EventAtStep(22, 150 + kUndoneCells + 1, K::PartSplit),  // cancelled
-      EventAtStep(25, 200, K::PartsMerged),                                                // the born part joins
-      EventAtStep(30, 50, K::HandleGained), EventAtStep(31, 80, K::HandleLost),            // cancelled
+      EventAtStep(5, 200, K::ComponentBorn),                                                // not a cut kind
+      EventAtStep(14, 0, K::HandleGained),  EventAtStep(14, 26, K::HandleLost),             // between frames
+      EventAtStep(14, 60, K::HandleLost),                                                   // stays
+      EventAtStep(21, 150, K::PartsMerged), EventAtStep(21, 150 + kUndoneCells + 1, K::PartSplit),  // between frames
+      EventAtStep(25, 200, K::PartsMerged),                                                 // the born part joins
+      EventAtStep(30, 100, K::HandleGained),                                                // stays
   };
-  const TopologyFrame first{-1, 1, 0, 0}, last{39, 1, 1, 0};
-  const Topology sphere{1, 0, 2}, torus{1, 0, 0};
-  const std::vector<EventCut> plan = PlanSurgery(events, first, last, sphere, torus, 1.0, 40);
-  const std::vector<EventCut> expected = {EventCut::Planned,   EventCut::Cancelled, EventCut::Cancelled,
-                                          EventCut::Planned,   EventCut::Cancelled, EventCut::Cancelled,
-                                          EventCut::Planned,   EventCut::Cancelled, EventCut::Cancelled};
+  const TopologyFrame frame{-1, 1, 0, 0};
+  const Topology sphere{1, 0, 2};
+  const std::vector<EventCut> plan = PlanSurgery(events, frame, frame, sphere, sphere, 1.0, 40);
+  const std::vector<EventCut> expected = {EventCut::Planned,       EventCut::BetweenFrames, EventCut::BetweenFrames,
+                                          EventCut::Planned,       EventCut::BetweenFrames, EventCut::BetweenFrames,
+                                          EventCut::Planned,       EventCut::Planned};
   EXPECT_EQ(plan, expected);
 }
 
