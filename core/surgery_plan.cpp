@@ -47,8 +47,8 @@ void MarkExcess(const std::vector<TopologyEvent> &events, std::vector<EventCut> 
 // pinching); births, deaths and cavities are not cut.
 bool CutKind(TopologyEventKind kind) { return ShapeOf(kind) != CutShape::None; }
 
-// BetweenFrames: the cut-kind events of opposite sign of one feature within each step,
-// paired off nearest first.
+// BetweenFrames: the cut-kind events of opposite sign of one feature within each piece of a
+// step's sign flips, paired off nearest first.
 void PairWithinSteps(const std::vector<TopologyEvent> &events, std::vector<EventCut> &plan, int betti) {
   struct Candidate {
     double distance;
@@ -58,7 +58,7 @@ void PairWithinSteps(const std::vector<TopologyEvent> &events, std::vector<Event
   for (int a = 0; a < int(events.size()); ++a)
     for (int b = 0; b < int(events.size()); ++b) {
       const Feature f = FeatureOf(events[a].kind), g = FeatureOf(events[b].kind);
-      if (events[a].step == events[b].step && f.betti == betti && g.betti == betti && f.sign > 0 && g.sign < 0 &&
+      if (events[a].step == events[b].step && events[a].sweep == events[b].sweep && f.betti == betti && g.betti == betti && f.sign > 0 && g.sign < 0 &&
           CutKind(events[a].kind) && CutKind(events[b].kind))
         pairs.push_back({vcg::Distance(events[a].position, events[b].position), a, b});
     }

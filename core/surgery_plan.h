@@ -7,12 +7,15 @@
 // mesh (topology.h, NeededCut). Surgery acts on the events that make up that change and
 // passes over:
 //   BetweenFrames  a cut kind (handle gained or lost, parts merged or split) undone by an
-//               opposite one of the same step, however far apart: no frame the tracker sees
-//               holds the feature. A flat front crosses a gap within one step: the legs of
-//               an inflated table meet along their whole length, the window between two legs
-//               opening at the bottom and closing at the top 26 cells above (table -> chair
-//               at 96 cells); cut, each such pair left four loops the target does not
-//               explain. Within a step, the nearest pairs first.
+//               opposite one of the same step and the same piece of its sign flips
+//               (TopologyEvent::sweep), however far apart: no frame the tracker sees holds
+//               the feature, and one front made and unmade it. A flat front crosses a gap
+//               within one step: the legs of an inflated table meet along their whole length,
+//               the window between two legs opening at the bottom and closing at the top 26
+//               cells above (table -> chair at 96 cells); cut, each such pair left four loops
+//               the target does not explain. Events of other pieces of the step are other
+//               fronts (a scan's hand meeting its head while a foot parts from a leg). Within
+//               a piece, the nearest pairs first.
 //   Undone      an event undone by an opposite one (the same kind of feature created then
 //               destroyed, or destroyed then created) within kUndoneCells and kUndoneTime of
 //               the morph. A part about a cell thick breaks up in digital noise (a bunny's ears

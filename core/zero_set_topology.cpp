@@ -505,16 +505,37 @@ std::vector<TopologyEvent> InsideSetTracker::Advance(const ScalarField &next, in
   struct Crossing {
     double at;  // fraction of the step
     std::size_t node;
+    std::size_t sweep;  // TopologyEvent::sweep
   };
-  std::vector<Crossing> flips;
+  std::vector<Crossing> flips;  // in node order
   for (std::size_t n = 0; n < s.value.size(); ++n) {
     if (poll && n > 0 && n % kNodesBetweenPolls == 0) poll();
-    if ((s.value[n] < 0) != (next.values[n] < 0)) flips.push_back({s.value[n] / (s.value[n] - next.values[n]), n});
+    if ((s.value[n] < 0) != (next.values[n] < 0)) flips.push_back({s.value[n] / (s.value[n] - next.values[n]), n, n});
   }
+  // The pieces of the flips: each flip joined to its flipped +x, +y, +z neighbours.
+  UnionFind pieces(int(flips.size()));
+  const std::size_t nx = std::size_t(s.grid.dims.X()), nxy = nx * std::size_t(s.grid.dims.Y());
+  auto index = [&](std::size_t node) {  // of a flipped node in flips, or -1
+    const auto it = std::lower_bound(flips.begin(), flips.end(), node,
+                                     [](const Crossing &c, std::size_t n) { return c.node < n; });
+    return it != flips.end() && it->node == node ? int(it - flips.begin()) : -1;
+  };
+  for (int f = 0; f < int(flips.size()); ++f) {
+    const std::size_t n = flips[f].node;
+    const bool last[3] = {n % nx == nx - 1, n / nx % (nxy / nx) == nxy / nx - 1, n + nxy >= s.value.size()};
+    const std::size_t offset[3] = {1, nx, nxy};
+    for (int a = 0; a < 3; ++a)
+      if (const int g = last[a] ? -1 : index(n + offset[a]); g >= 0) pieces.Merge(f, g);
+  }
+  for (int f = 0; f < int(flips.size()); ++f) flips[f].sweep = flips[pieces.Find(f)].node;
   std::sort(flips.begin(), flips.end(),
             [](const Crossing &a, const Crossing &b) { return a.at < b.at || (a.at == b.at && a.node < b.node); });
   std::vector<TopologyEvent> events;
-  for (const Crossing &c : flips) s.Flip(c.node, c.at, step, events);
+  for (const Crossing &c : flips) {
+    const std::size_t before = events.size();
+    s.Flip(c.node, c.at, step, events);
+    for (std::size_t e = before; e < events.size(); ++e) events[e].sweep = c.sweep;
+  }
   s.value = next.values;
   return events;
 }

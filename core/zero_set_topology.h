@@ -106,6 +106,9 @@ struct TopologyEvent {
   vcg::Point3i node = vcg::Point3i(0, 0, 0);  // the flipped node x
   Point3 position = Point3(0, 0, 0);          // x in world coordinates
   TopologyEventKind kind = TopologyEventKind::ComponentBorn;
+  // The piece of the step's sign flips, joined through 6-neighbours, that x belongs to (a
+  // node of it): a front that crosses a gap within one step flips one piece.
+  std::size_t sweep = 0;
 };
 
 // Changes of the three numbers (after - before).

@@ -40,27 +40,31 @@ TEST(SurgeryPlan, EventsUndoneSoonNearbyAreNotCut) {
   EXPECT_EQ(plan, expected);
 }
 
-// Cut kinds of opposite sign within one step undo each other however far apart (a window
-// between two legs opening at the bottom and closing at the top 26 cells above), nearest
-// first (the gain at 0 goes with the loss at 26, not the one at 60); a merge and a split of
-// one step farther apart than kUndoneCells too. Opposite events of different steps that far
-// apart stay for surgery, and so does a merge whose opposite is a birth (not a cut kind).
+// Cut kinds of opposite sign within one piece of a step's sign flips undo each other however
+// far apart (a window between two legs opening at the bottom and closing at the top 26 cells
+// above), nearest first (the gain at 0 goes with the loss at 26, not the one at 60); a merge
+// and a split of one step farther apart than kUndoneCells too. Opposite events of different
+// steps, or of two pieces of one step, stay for surgery, and so does a merge whose opposite is
+// a birth (not a cut kind).
 TEST(SurgeryPlan, OppositeEventsOfOneStepUndoEachOther) {
   using K = TopologyEventKind;
-  const std::vector<TopologyEvent> events = {
+  std::vector<TopologyEvent> events = {
       EventAtStep(5, 200, K::ComponentBorn),                                                // not a cut kind
       EventAtStep(14, 0, K::HandleGained),  EventAtStep(14, 26, K::HandleLost),             // between frames
       EventAtStep(14, 60, K::HandleLost),                                                   // stays
       EventAtStep(21, 150, K::PartsMerged), EventAtStep(21, 150 + kUndoneCells + 1, K::PartSplit),  // between frames
       EventAtStep(25, 200, K::PartsMerged),                                                 // the born part joins
       EventAtStep(30, 100, K::HandleGained),                                                // stays
+      EventAtStep(35, 300, K::HandleGained), EventAtStep(35, 310, K::HandleLost),           // two fronts: stay
   };
+  events[events.size() - 1].sweep = 1;  // the loss at step 35 flipped with another piece of the step
   const TopologyFrame frame{-1, 1, 0, 0};
   const Topology sphere{1, 0, 2};
   const std::vector<EventCut> plan = PlanSurgery(events, frame, frame, sphere, sphere, 1.0, 40);
-  const std::vector<EventCut> expected = {EventCut::Planned,       EventCut::BetweenFrames, EventCut::BetweenFrames,
-                                          EventCut::Planned,       EventCut::BetweenFrames, EventCut::BetweenFrames,
-                                          EventCut::Planned,       EventCut::Planned};
+  const std::vector<EventCut> expected = {EventCut::Planned, EventCut::BetweenFrames, EventCut::BetweenFrames,
+                                          EventCut::Planned, EventCut::BetweenFrames, EventCut::BetweenFrames,
+                                          EventCut::Planned, EventCut::Planned,       EventCut::Planned,
+                                          EventCut::Planned};
   EXPECT_EQ(plan, expected);
 }
 

@@ -329,6 +329,43 @@ TEST(ZeroSetTopology, SphereToThreeToriGainsThreeHandles) {
   }
 }
 
+// Each event names the piece of its step's sign flips (TopologyEvent::sweep): a front that
+// fills the gap under a table's top from the bottom up within one step closes a window
+// (handles gained at the bottom, digital pairs there) and fills it (the last handle lost, in
+// the window's middle), all in one piece, while a ball born apart in the same step is another.
+TEST(ZeroSetTopology, EventsNameThePieceOfTheirStepsFlips) {
+  const Grid g = Cube(1.0, 41);
+  auto box = [](const Point3 &lo, const Point3 &hi) {
+    return [lo, hi](const Point3 &p) {
+      double d = -1e9;
+      for (int a = 0; a < 3; ++a) d = std::max({d, lo[a] - p[a], p[a] - hi[a]});
+      return d;  // a distance-like field: negative inside
+    };
+  };
+  const Shape table = Union({box(Point3(-0.6, -0.2, -0.6), Point3(-0.4, 0.2, 0.6)),
+                             box(Point3(0.4, -0.2, -0.6), Point3(0.6, 0.2, 0.6)),
+                             box(Point3(-0.6, -0.2, 0.4), Point3(0.6, 0.2, 0.6))});
+  const Shape block = box(Point3(-0.6, -0.2, -0.6), Point3(0.6, 0.2, 0.6));
+  // The block, deepest at the bottom: the gap's nodes cross 0 earliest there.
+  const Shape filled = [block](const Point3 &p) {
+    const double d = block(p);
+    return d < 0 ? d - 0.5 * (0.6 - p[2]) : d;
+  };
+  const std::vector<TopologyEvent> events =
+      Events(Sampled(g, table), Sampled(g, Union({filled, Sphere(Point3(0, 0.7, -0.7), 0.15)})), 0);
+  EXPECT_EQ(Effect(events), (TopologyChange{1, 0, 0}));
+  const TopologyEvent *gained = nullptr, *lost = nullptr, *born = nullptr;
+  for (const TopologyEvent &e : events) {  // the last of each kind
+    if (e.kind == TopologyEventKind::HandleGained) gained = &e;
+    if (e.kind == TopologyEventKind::HandleLost) lost = &e;
+    if (e.kind == TopologyEventKind::ComponentBorn) born = &e;
+  }
+  ASSERT_TRUE(gained && lost && born);
+  EXPECT_EQ(gained->sweep, lost->sweep);
+  EXPECT_NE(born->sweep, gained->sweep);
+  EXPECT_GT(lost->position[2] - gained->position[2], 0.3);  // the window closes at the bottom, fills at the top
+}
+
 TEST(ZeroSetTopology, Timings) {
   using Clock = std::chrono::steady_clock;
   auto seconds = [](Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); };
