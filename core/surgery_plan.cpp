@@ -58,8 +58,9 @@ void PairWithinSteps(const std::vector<TopologyEvent> &events, std::vector<Event
   for (int a = 0; a < int(events.size()); ++a)
     for (int b = 0; b < int(events.size()); ++b) {
       const Feature f = FeatureOf(events[a].kind), g = FeatureOf(events[b].kind);
-      if (events[a].step == events[b].step && events[a].sweep == events[b].sweep && f.betti == betti && g.betti == betti && f.sign > 0 && g.sign < 0 &&
-          CutKind(events[a].kind) && CutKind(events[b].kind))
+      const bool oneFront = events[a].step == events[b].step && events[a].sweep == events[b].sweep;
+      if (oneFront && f.betti == betti && g.betti == betti && f.sign > 0 && g.sign < 0 && CutKind(events[a].kind) &&
+          CutKind(events[b].kind))
         pairs.push_back({vcg::Distance(events[a].position, events[b].position), a, b});
     }
   std::sort(pairs.begin(), pairs.end(), [](const Candidate &x, const Candidate &y) {

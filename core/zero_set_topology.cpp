@@ -514,7 +514,7 @@ std::vector<TopologyEvent> InsideSetTracker::Advance(const ScalarField &next, in
   }
   // The pieces of the flips: each flip joined to its flipped +x, +y, +z neighbours.
   UnionFind pieces(int(flips.size()));
-  const std::size_t nx = std::size_t(s.grid.dims.X()), nxy = nx * std::size_t(s.grid.dims.Y());
+  const std::size_t nx = std::size_t(s.grid.dims.X()), ny = std::size_t(s.grid.dims.Y()), nxy = nx * ny;
   auto index = [&](std::size_t node) {  // of a flipped node in flips, or -1
     const auto it = std::lower_bound(flips.begin(), flips.end(), node,
                                      [](const Crossing &c, std::size_t n) { return c.node < n; });
@@ -522,7 +522,7 @@ std::vector<TopologyEvent> InsideSetTracker::Advance(const ScalarField &next, in
   };
   for (int f = 0; f < int(flips.size()); ++f) {
     const std::size_t n = flips[f].node;
-    const bool last[3] = {n % nx == nx - 1, n / nx % (nxy / nx) == nxy / nx - 1, n + nxy >= s.value.size()};
+    const bool last[3] = {n % nx == nx - 1, n / nx % ny == ny - 1, n + nxy >= s.value.size()};
     const std::size_t offset[3] = {1, nx, nxy};
     for (int a = 0; a < 3; ++a)
       if (const int g = last[a] ? -1 : index(n + offset[a]); g >= 0) pieces.Merge(f, g);
