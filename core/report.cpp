@@ -153,7 +153,7 @@ std::string Report::ToText() const {
       else if (s.outcome == EventCut::Undone)
         o << ": not cut, an opposite event nearby undoes it";
       else if (s.outcome == EventCut::BetweenFrames)
-        o << ": not cut, an opposite event of the same step undoes it (no frame holds the feature)";
+        o << ": not cut, an opposite event of the same step and front undoes it (no frame holds the feature)";
       else if (s.outcome == EventCut::SourceGrid)
         o << ": not cut, it removes a feature of the grid's picture of the source that the source mesh has not";
       else if (s.outcome == EventCut::TargetGrid)

@@ -81,7 +81,7 @@ enum class EventCut {
   AwayFromSurface,  // no tracked triangle within 6 cells + the hole radius, at its step or as it came nearer
                     // (an untracked part's event)
   OneSheetTracked,  // sheets meet, but one side has no tracked face (a part grown from nothing merging)
-  BetweenFrames,    // an opposite event of the same step undid it: no frame holds the feature (surgery_plan.h)
+  BetweenFrames,    // an opposite event of the same step and front undid it: no frame holds the feature (surgery_plan.h)
   Undone,           // an opposite event nearby soon undid it (surgery_plan.h)
   SourceGrid,       // f0's inside set has a feature the source mesh has not; this removed it
   TargetGrid,       // f1's inside set has a feature the target mesh has not; this made it

@@ -44,30 +44,20 @@ bool FarFromBox(const Point3 &p, double r, const Point3 &a, const Point3 &b, con
   return false;
 }
 
-// The nodes a step sweeps into the inside set around an event at x: f(., t_k) >= 0 and
-// f(., t_k+1) < 0, joined through 6-neighbours to the swept node nearest x (within
-// kSweptSeekCells). Where two sheets meet at a point (spheres merging) it is a few nodes
-// around x; where flat fronts meet across a whole section (the rails of chair -> chair_rails
-// growing from both legs) it is the slab between them, the section's size.
+// The nodes a step sweeps into the inside set at an event: f(., t_k) >= 0 and
+// f(., t_k+1) < 0, joined through 6-neighbours to the event's node x (swept itself where
+// sheets meet at the event's own step; else none). Where two sheets meet at a point
+// (spheres merging) it is a few nodes around x; where flat fronts meet across a whole
+// section (the rails of chair -> chair_rails growing from both legs) it is the slab between
+// them, the section's size.
 class Swept {
  public:
-  Swept(const Point3 &x, const ScalarField &fCur, const ScalarField &fNext) : grid_(fNext.grid) {
+  Swept(const vcg::Point3i &x, const ScalarField &fCur, const ScalarField &fNext) : grid_(fNext.grid) {
     const Grid &g = grid_;
     auto swept = [&](std::size_t n) { return fCur.values[n] >= 0 && fNext.values[n] < 0; };
-    const Point3 c = g.ToGrid(x);
-    const int r = int(kSweptSeekCells);
-    long seed = -1;
-    double nearest = kSweptSeekCells * kSweptSeekCells + 1;
-    for (int k = int(std::floor(c.Z())) - r; k <= int(std::ceil(c.Z())) + r; ++k)
-      for (int j = int(std::floor(c.Y())) - r; j <= int(std::ceil(c.Y())) + r; ++j)
-        for (int i = int(std::floor(c.X())) - r; i <= int(std::ceil(c.X())) + r; ++i) {
-          if (!Inside(i, j, k) || !swept(g.Index(i, j, k))) continue;
-          const double d = (Point3(i, j, k) - c).SquaredNorm();
-          if (d < nearest) nearest = d, seed = long(g.Index(i, j, k));
-        }
-    if (seed < 0) return;
-    std::vector<std::size_t> stack = {std::size_t(seed)};
-    nodes_.insert(std::size_t(seed));
+    if (!Inside(x[0], x[1], x[2]) || !swept(g.Index(x[0], x[1], x[2]))) return;
+    std::vector<std::size_t> stack = {g.Index(x[0], x[1], x[2])};
+    nodes_.insert(stack.back());
     const long nx = g.dims.X(), nxy = nx * g.dims.Y();
     while (!stack.empty()) {
       const std::size_t n = stack.back();
@@ -94,7 +84,6 @@ class Swept {
   }
 
  private:
-  static constexpr double kSweptSeekCells = 2;
   bool Inside(int i, int j, int k) const {
     return i >= 0 && j >= 0 && k >= 0 && i < grid_.dims.X() && j < grid_.dims.Y() && k < grid_.dims.Z();
   }
@@ -246,7 +235,7 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
         // (c) where sheets meet at the event's own step, each disc grows over the faces
         // that lie where the step swept the gap between them (Swept).
         if (shape == CutShape::Discs && outcome.stepsLate == 0) {
-          const Swept swept(event.position, fCur, fNext);
+          const Swept swept(event.node, fCur, fNext);
           const std::vector<int> grown = Spread(faces, [&](const Point3 &p) { return swept.Touches(p); }, position);
           faces.insert(faces.end(), grown.begin(), grown.end());
         }
