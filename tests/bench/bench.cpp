@@ -25,6 +25,7 @@
 #include "tests/support/busy.h"
 #include "tests/support/correspondence.h"
 #include "tests/support/meshes.h"
+#include "tests/support/shapes.h"
 
 #include "core/parameters.h"
 
@@ -116,6 +117,25 @@ void WriteImages(const Mesh &source, Result &result, const char *path) {
   std::fclose(out);
 }
 
+// An ASCII PLY of m's live vertices and faces (with the cut's boundary visible in MeshLab).
+void WritePly(const Mesh &m, const std::string &path) {
+  FILE *out = std::fopen(path.c_str(), "w");
+  if (!out) throw std::runtime_error("cannot write " + path);
+  std::fprintf(out, "ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face %d\nproperty list uchar int vertex_indices\nend_header\n", m.vn, m.fn);
+  std::vector<int> index(m.vert.size(), -1);
+  int next = 0;
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    if (!m.vert[v].IsD()) {
+      index[v] = next++;
+      std::fprintf(out, "%.7g %.7g %.7g\n", m.vert[v].cP().X(), m.vert[v].cP().Y(), m.vert[v].cP().Z());
+    }
+  for (const Face &f : m.face)
+    if (!f.IsD())
+      std::fprintf(out, "3 %d %d %d\n", index[f.cV(0) - &m.vert[0]], index[f.cV(1) - &m.vert[0]], index[f.cV(2) - &m.vert[0]]);
+  std::fclose(out);
+}
+
 std::map<std::string, std::string> Assignments(int argc, char **argv, int first) {
   std::map<std::string, std::string> values;
   for (int i = first; i < argc; ++i) {
@@ -198,7 +218,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s row N | grid CELLS | map SOURCE TARGET [SOURCE.pp TARGET.pp] [options] | header | "
+    std::fprintf(stderr, "usage: %s row N | grid CELLS | shapes SOURCE TARGET [--save DIR] | map SOURCE TARGET [SOURCE.pp TARGET.pp] [options] | header | "
                          "mlx [NAME=VALUE ...] | parameters\n", argv[0]);
     return 2;
   }
@@ -308,6 +328,21 @@ int main(int argc, char **argv) {
       const double asSoup = wall(soup);
       PrintRow("sphere -> torus, " + faces + ", triangle soup", result.report, 0);
       std::printf("whole map, triangle soup / welded: %.2f s / %.2f s = %.2f\n", asSoup, welded, asSoup / welded);
+    } else if (mode == "shapes") {
+      // Two of tests/support/shapes.h's shapes (marching cubes at 64 cells, as the family
+      // tests make them), default placement unless --align says otherwise: the report and
+      // the family tests' line of figures.
+      MakeShape(argv[2], source, 64);
+      MakeShape(argv[3], target, 64);
+      const auto start = std::chrono::steady_clock::now();
+      ComputeMap(source, target, anchors, options, result);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::printf("%s%s", result.report.ToText().c_str(),
+                  Figures(argv[2], argv[3], options.gridResolution, target, result, seconds).line.c_str());
+      if (const char *dir = StringFlag(argc, argv, "--save")) {  // DIR/cut.ply, DIR/mapped.ply
+        WritePly(result.cut, std::string(dir) + "/cut.ply");
+        WritePly(result.mapped, std::string(dir) + "/mapped.ply");
+      }
     } else if (mode == "map") {
       LoadMesh(argv[2], source);
       LoadMesh(argv[3], target);

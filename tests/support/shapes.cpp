@@ -2,8 +2,11 @@
 
 #include "meshes.h"
 
+#include "core/quality.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <stdexcept>
 
@@ -114,6 +117,43 @@ std::vector<Made> Catalogue() {
   AddSlattedBack(slats);
   all.push_back({{"chair_slats", 1, 3}, Union(slats), furniture});
   all.push_back({{"table", 1, 0}, Union(Seat(0.75)), Box3(Point3(-0.5, -0.5, -0.1), Point3(0.5, 0.5, 0.85))});
+  std::vector<Sdf> stool = Seat(0.65);
+  AddRails(stool);
+  all.push_back({{"stool", 1, 4}, Union(stool), Box3(Point3(-0.5, -0.5, -0.1), Point3(0.5, 0.5, 0.75))});
+  std::vector<Sdf> bench = {[](const Point3 &p) { return Block(p, Point3(-0.8, -0.25, 0.4), Point3(0.8, 0.25, 0.5)); }};
+  for (double x : {-0.8, 0.7}) {  // a leg at each corner, a rail between the two legs of each end
+    for (double y : {-0.25, 0.15})
+      bench.push_back([x, y](const Point3 &p) { return Block(p, Point3(x, y, 0), Point3(x + kLeg, y + kLeg, 0.45)); });
+    bench.push_back([x](const Point3 &p) { return Block(p, Point3(x, -0.25, 0.12), Point3(x + kLeg, 0.25, 0.2)); });
+  }
+  all.push_back({{"bench", 1, 2}, Union(bench), Box3(Point3(-0.9, -0.35, -0.1), Point3(0.9, 0.35, 0.6))});
+  all.push_back({{"frame", 1, 1},  // a picture frame: a slab 1.4 x 1 with a window 1 x 0.6
+                 [](const Point3 &p) {
+                   return std::max(Block(p, Point3(-0.7, -0.5, -0.06), Point3(0.7, 0.5, 0.06)),
+                                   -Block(p, Point3(-0.5, -0.3, -1), Point3(0.5, 0.3, 1)));
+                 },
+                 Box3(Point3(-0.8, -0.6, -0.16), Point3(0.8, 0.6, 0.16))});
+  all.push_back({{"mug", 1, 1},  // a solid cylinder with a handle, half a torus, on its side
+                 [](const Point3 &p) {
+                   const double body = std::max(std::hypot(p.X(), p.Y()) - 0.4, std::abs(p.Z()) - 0.5);
+                   const double handle = std::hypot(std::hypot(p.X() - 0.4, p.Z()) - 0.25, p.Y()) - 0.07;
+                   return std::min(body, handle);
+                 },
+                 Box3(Point3(-0.5, -0.5, -0.6), Point3(0.8, 0.5, 0.6))});
+  std::vector<Sdf> ladder;  // two stiles and five rungs
+  for (double x : {-0.3, 0.22})
+    ladder.push_back([x](const Point3 &p) { return Block(p, Point3(x, -0.05, -1), Point3(x + 0.08, 0.05, 1)); });
+  for (int r = 0; r < 5; ++r)
+    ladder.push_back([r](const Point3 &p) {
+      const double z = -0.8 + 0.4 * r;
+      return Block(p, Point3(-0.3, -0.04, z - 0.04), Point3(0.3, 0.04, z + 0.04));
+    });
+  all.push_back({{"ladder", 1, 4}, Union(ladder), Box3(Point3(-0.4, -0.15, -1.1), Point3(0.4, 0.15, 1.1))});
+  all.push_back({{"dumbbell", 1, 0},  // two balls joined by a bar
+                 Union({[](const Point3 &p) { return Ball(p, Point3(-0.6, 0, 0), 0.35); },
+                        [](const Point3 &p) { return Ball(p, Point3(0.6, 0, 0), 0.35); },
+                        [](const Point3 &p) { return Block(p, Point3(-0.6, -0.1, -0.1), Point3(0.6, 0.1, 0.1)); }}),
+                 Box3(Point3(-1.05, -0.45, -0.45), Point3(1.05, 0.45, 0.45))});
   return all;
 }
 
@@ -132,6 +172,30 @@ void MakeShape(const std::string &name, Mesh &m, int cells) {
   for (const Made &made : Catalogue())
     if (made.shape.name == name) return MakeImplicit(m, made.sdf, made.box, cells);
   throw std::invalid_argument("no shape named " + name);
+}
+
+FamilyFigures Figures(const std::string &source, const std::string &target, int cells, const Mesh &targetMesh,
+                      const Result &result, double seconds) {
+  const Report &rep = result.report;
+  FamilyFigures f;
+  for (const EventSurgery &s : rep.surgery) {
+    if (s.outcome != EventCut::Cut) continue;
+    const TopologyEventKind kind = rep.topologyEvents[s.event].kind;
+    ++f.eventsCut;
+    (kind == TopologyEventKind::HandleGained || kind == TopologyEventKind::PartsMerged ? f.discPairs : f.bands) += 1;
+  }
+  f.longestShare = LongestEdge(result.mapped) / targetMesh.bbox.Diag();
+  char line[1024];
+  std::snprintf(line, sizeof line,
+                "family | %s -> %s | %d | events %zu, %d cut (%d disc pairs, %d bands) | cut %d/%d/%d | needed %d/%d/%d "
+                "| coverage %.2f%% | flipped %.2f%% (%.2f%% before untangling) | longest %.2f%% of the diagonal | %s | %.1f s\n",
+                source.c_str(), target.c_str(), cells, rep.topologyEvents.size(), f.eventsCut, f.discPairs, f.bands,
+                rep.cutComponents, rep.cutBoundaryLoops, rep.cutEulerCharacteristic, rep.neededComponents,
+                rep.neededBoundaryLoops, rep.neededEulerCharacteristic, 100 * rep.quality.coverage,
+                100 * rep.quality.flippedAreaShare, 100 * rep.quality.flippedBeforeUntangling, 100 * f.longestShare,
+                rep.morphMode.substr(0, rep.morphMode.find(' ')).c_str(), seconds);
+  f.line = line;
+  return f;
 }
 
 } // namespace eulermap::testing

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "core/pipeline.h"
 
 #include <string>
 #include <vector>
@@ -30,5 +31,17 @@ const std::vector<Shape> &Shapes();
 // in:  a name of Shapes(), the marching cubes' cells along the longest side
 // out: m (throws std::invalid_argument for an unknown name)
 void MakeShape(const std::string &name, Mesh &m, int cells = 128);
+
+// A map between two shapes, in the figures the family tests assert and print.
+struct FamilyFigures {
+  int eventsCut = 0, discPairs = 0, bands = 0;  // surgery's cuts: each disc pair or band adds 2 loops
+  double longestShare = 0;  // longest mapped edge / the target's diagonal
+  std::string line;  // `family | SOURCE -> TARGET | CELLS | ...`: one row of the closing note's table
+};
+
+// in:  the pair's names, the grid's cells, the target mesh, the map's result, its wall time
+// out: its figures
+FamilyFigures Figures(const std::string &source, const std::string &target, int cells, const Mesh &targetMesh,
+                      const Result &result, double seconds);
 
 } // namespace eulermap::testing

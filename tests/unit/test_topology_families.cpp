@@ -9,9 +9,8 @@
 //   - coverage of the target >= 97%, flipped area <= 1% after untangling (and its figure
 //     before untangling is reported), longest mapped edge <= 5% of the target's diagonal.
 // Each case prints one `family |` line with its figures (the closing note's table). Every
-// pair runs at every grid (76 cases: 2 min 10 s at 48 and 64 cells, 5 min 32 s at 96 and 128
-// on 2 cores, one case at a time).
-#include "core/quality.h"
+// pair of kPairs runs at every grid (76 cases: 2 min 10 s at 48 and 64 cells, 5 min 32 s at 96
+// and 128 on 2 cores, one case at a time), kFurtherPairs at 64 (4 cases, about 45 s).
 #include "core/topology.h"
 #include "tests/support/meshes.h"
 #include "tests/support/shapes.h"
@@ -40,6 +39,14 @@ const Pair kPairs[] = {
     {"chair_slats", "chair"}, {"table", "chair"},    {"chair", "table"},
 };
 
+// Shapes added later (a stool, a picture frame, a ladder, a dumbbell), made to try the
+// method on shapes its families were not fixed on, at 64 cells only (the suite's time). The
+// pairs among them that still fail are in docs/NOTES.md (`eulermap_bench shapes SOURCE
+// TARGET` prints any pair's figures).
+const Pair kFurtherPairs[] = {
+    {"chair", "stool"}, {"sphere", "frame"}, {"sphere", "ladder"}, {"dumbbell", "ring2"},
+};
+
 constexpr int kMeshCells = 64;  // the marching cubes' resolution of the shapes
 
 class Family : public ::testing::TestWithParam<std::tuple<Pair, int>> {};
@@ -57,27 +64,14 @@ TEST_P(Family, CutAsNeededCoveredUnfoldedUnstretched) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const Report &rep = result.report;
   std::printf("%s", rep.ToText().c_str());
-  int discPairs = 0, bands = 0, events = 0;
-  for (const EventSurgery &s : rep.surgery) {
-    if (s.outcome != EventCut::Cut) continue;
-    const TopologyEventKind kind = rep.topologyEvents[s.event].kind;
-    ++events;
-    (kind == TopologyEventKind::HandleGained || kind == TopologyEventKind::PartsMerged ? discPairs : bands) += 1;
-  }
-  const double diag = target.bbox.Diag(), longest = LongestEdge(result.mapped);
-  std::printf("family | %s -> %s | %d | events %zu, %d cut (%d disc pairs, %d bands) | cut %d/%d/%d | needed %d/%d/%d "
-              "| coverage %.2f%% | flipped %.2f%% (%.2f%% before untangling) | longest %.2f%% of the diagonal | %s | %.1f s\n",
-              pair.source, pair.target, cells, rep.topologyEvents.size(), events, discPairs, bands, rep.cutComponents,
-              rep.cutBoundaryLoops, rep.cutEulerCharacteristic, rep.neededComponents, rep.neededBoundaryLoops,
-              rep.neededEulerCharacteristic, 100 * rep.quality.coverage, 100 * rep.quality.flippedAreaShare,
-              100 * rep.quality.flippedBeforeUntangling, 100 * longest / diag,
-              rep.morphMode.substr(0, rep.morphMode.find(' ')).c_str(), seconds);
+  const FamilyFigures f = Figures(pair.source, pair.target, cells, target, result, seconds);
+  std::printf("%s", f.line.c_str());
   ASSERT_TRUE(rep.cutPredicted) << rep.cutNotChecked;
   EXPECT_TRUE(rep.CutAsNeeded());
-  EXPECT_EQ(rep.cutBoundaryLoops, 2 * (discPairs + bands));  // as the events acted on predict
+  EXPECT_EQ(rep.cutBoundaryLoops, 2 * (f.discPairs + f.bands));  // as the events acted on predict
   EXPECT_GE(rep.quality.coverage, 0.97);
   EXPECT_LE(rep.quality.flippedAreaShare, 0.01);
-  EXPECT_LE(longest, 0.05 * diag);
+  EXPECT_LE(f.longestShare, 0.05);
 }
 
 std::string Name(const ::testing::TestParamInfo<std::tuple<Pair, int>> &info) {
@@ -87,5 +81,6 @@ std::string Name(const ::testing::TestParamInfo<std::tuple<Pair, int>> &info) {
 
 INSTANTIATE_TEST_SUITE_P(Coarse, Family, ::testing::Combine(::testing::ValuesIn(kPairs), ::testing::Values(48, 64)), Name);
 INSTANTIATE_TEST_SUITE_P(Fine, Family, ::testing::Combine(::testing::ValuesIn(kPairs), ::testing::Values(96, 128)), Name);
+INSTANTIATE_TEST_SUITE_P(Further, Family, ::testing::Combine(::testing::ValuesIn(kFurtherPairs), ::testing::Values(64)), Name);
 
 } // namespace
