@@ -231,6 +231,7 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
       if (!bothSheets) {
         outcome.outcome = EventCut::OneSheetTracked;
       } else {
+        const std::vector<int> crossing = faces;
         for (int n : InSphere(event.position, position)) faces.push_back(n);
         // (c) where sheets meet at the event's own step, each disc grows over the faces
         // that lie where the step swept the gap between them (Swept).
@@ -239,6 +240,10 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
           const std::vector<int> grown = Spread(faces, [&](const Point3 &p) { return swept.Touches(p); }, position);
           faces.insert(faces.end(), grown.begin(), grown.end());
         }
+        // Only what is joined to (b) through the cut's own faces, corner to corner: a piece of
+        // (a) or (c) apart from both discs (or the band) lies on another layer of the tracked
+        // surface, and cutting it would open a hole that no event calls for.
+        faces = JoinedTo(crossing, faces);
         for (int n : faces)
           if (tris_[n].state == kAlive) tris_[n].state = outcome.event;
         cutting.push_back({outcome.event, event.position});
@@ -423,6 +428,25 @@ std::vector<int> Surgery::Spread(const std::vector<int> &seeds, const std::funct
       }
   }
   return grown;
+}
+
+std::vector<int> Surgery::JoinedTo(const std::vector<int> &seeds, const std::vector<int> &faces) const {
+  std::unordered_map<int, std::vector<int>> around;  // point -> the faces of `faces` at it
+  std::unordered_set<int> unique;
+  for (int n : faces)
+    if (unique.insert(n).second)
+      for (int c = 0; c < 3; ++c) around[tris_[n].v[c]].push_back(n);
+  std::unordered_set<int> seen(seeds.begin(), seeds.end());
+  std::vector<int> stack(seen.begin(), seen.end()), joined;
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    joined.push_back(n);
+    for (int c = 0; c < 3; ++c)
+      for (int m : around[tris_[n].v[c]])
+        if (seen.insert(m).second) stack.push_back(m);
+  }
+  return joined;
 }
 
 std::vector<int> Surgery::ConnectedFrom(int seed, const EdgeFaces &faces) const {

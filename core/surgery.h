@@ -42,6 +42,13 @@
 //          meet over that section at once, and a disc of the hole radius leaves the rest of
 //          each front as a membrane the pull-back folds onto the walls, its faces spanning
 //          the section (mapped edges of 6.4% of the target's diagonal at 96 cells);
+//      of (a) and (c), only the faces joined to (b)'s discs or band through the cut's own
+//      faces, corner to corner: another layer of the tracked surface within the radius (a
+//      fold, a wall beside the meeting fronts) keeps its faces. A piece of it cut opened a
+//      hole no event called for: ring1 -> ring2 at 64 cells grown at centre-and-scale, 13
+//      faces of the sphere apart from both discs, 3 loops where 2 are needed; chair ->
+//      chair_rails at 96 cells (with the topology-keeping growth of docs/NOTES.md), two
+//      small holes beside the discs on the front legs, 10 loops where 8 are needed;
 //   3. clean: the rim left must be a manifold boundary and look deliberate:
 //        - ears: a face with two or more edges on a rim goes (no dangling faces);
 //        - non-manifold vertices: where the faces around a vertex form two or more fans,
@@ -155,6 +162,8 @@ class Surgery {
   // are all near.
   std::vector<int> Spread(const std::vector<int> &seeds, const std::function<bool(const Point3 &)> &near,
                           const std::vector<Point3> &position) const;
+  // The faces of `faces` joined to the seeds (among them) through corners of faces it holds.
+  std::vector<int> JoinedTo(const std::vector<int> &seeds, const std::vector<int> &faces) const;
   // The faces joined to seed through edges that `faces` holds (seed among them).
   std::vector<int> ConnectedFrom(int seed, const EdgeFaces &faces) const;
   // cutting: the outcomes (events) that cut at this step, with their positions

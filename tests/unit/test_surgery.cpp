@@ -6,6 +6,8 @@
 #include "tests/support/fields.h"
 #include "tests/support/meshes.h"
 
+#include <vcg/complex/append.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -51,6 +53,36 @@ TEST(Surgery, EventsCutByKindWhereTheSurfaceTakesPart) {
   EXPECT_EQ(t.eulerCharacteristic, 0);
   for (const Vertex &v : cut.vert)  // the poles went, the equator stayed
     if (!v.IsD()) EXPECT_LT(std::abs(v.cP().Z() - g.Node(7, 7, 7).Z()), 0.29);
+}
+
+// Another layer of the tracked surface (here a small closed sheet inside the sphere, beside
+// the event's node, within the hole radius of it but off the cut's axis) keeps its faces: the
+// sphere loses its two discs, and the layer no hole (without the rule, a cap of it went and
+// the cut had 3 loops where the event makes 2).
+TEST(Surgery, OnlyTheDiscsTheAxisMeetsAreCut) {
+  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
+  const double cell = g.h;
+  const Point3 x = g.Node(7, 7, 7);
+  Mesh surface, layer;
+  MakeSphere(surface, x, 0.3, 3);
+  MakeSphere(layer, x + Point3(cell, 0, 0), 0.05, 3);  // from 0.6 to 1.4 cells off the axis
+  vcg::tri::Append<Mesh, Mesh>::Mesh(surface, layer);
+  std::vector<Point3> points;
+  for (const Vertex &v : surface.vert) points.push_back(v.cP());
+  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+  const ScalarField f = Quadric(g, x, Point3(-1, -1, 1));
+  const std::vector<TopologyEvent> events = {EventAt(g, {7, 7, 7}, TopologyEventKind::HandleGained)};
+  Surgery surgery(surface, cell, cell, events, {EventCut::Planned}, false);
+  surgery.Step(0, {}, f, f, tracker);
+  ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
+  Mesh cut;
+  std::vector<EventSurgery> outcomes;
+  surgery.Build(surface, tracker.Points(), cut, outcomes);
+  const Topology t = MeasureTopology(cut);  // an annulus and the closed layer
+  EXPECT_EQ(t.components, 2);
+  EXPECT_EQ(t.boundaryLoops, 2);
+  EXPECT_EQ(t.eulerCharacteristic, 2);
 }
 
 // The tracked sheets lag the level set where they meet: an event the tracked surface is
