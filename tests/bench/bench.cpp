@@ -29,6 +29,8 @@
 
 #include "core/parameters.h"
 
+#include <wrap/io_trimesh/export_ply.h>
+
 #include <unistd.h>
 
 #include <chrono>
@@ -117,23 +119,9 @@ void WriteImages(const Mesh &source, Result &result, const char *path) {
   std::fclose(out);
 }
 
-// An ASCII PLY of m's live vertices and faces (with the cut's boundary visible in MeshLab).
-void WritePly(const Mesh &m, const std::string &path) {
-  FILE *out = std::fopen(path.c_str(), "w");
-  if (!out) throw std::runtime_error("cannot write " + path);
-  std::fprintf(out, "ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
-                    "element face %d\nproperty list uchar int vertex_indices\nend_header\n", m.vn, m.fn);
-  std::vector<int> index(m.vert.size(), -1);
-  int next = 0;
-  for (std::size_t v = 0; v < m.vert.size(); ++v)
-    if (!m.vert[v].IsD()) {
-      index[v] = next++;
-      std::fprintf(out, "%.7g %.7g %.7g\n", m.vert[v].cP().X(), m.vert[v].cP().Y(), m.vert[v].cP().Z());
-    }
-  for (const Face &f : m.face)
-    if (!f.IsD())
-      std::fprintf(out, "3 %d %d %d\n", index[f.cV(0) - &m.vert[0]], index[f.cV(1) - &m.vert[0]], index[f.cV(2) - &m.vert[0]]);
-  std::fclose(out);
+// A PLY of m (vcglib's exporter; the cut's boundary shows in MeshLab).
+void WritePly(Mesh &m, const std::string &path) {
+  if (vcg::tri::io::ExporterPLY<Mesh>::Save(m, path.c_str(), false) != 0) throw std::runtime_error("cannot write " + path);
 }
 
 std::map<std::string, std::string> Assignments(int argc, char **argv, int first) {
