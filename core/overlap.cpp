@@ -65,12 +65,14 @@ struct Candidate {
 struct Overlaps {
   Occupancy source, target;
   std::vector<Sample> samples;  // the source's nodes with o > 0
+  Eigen::Matrix3d back;         // R^-1 = R^T, R the placement's rotation
 
-  Overlaps(const Mesh &s, const Mesh &t, int cells) : source(s, cells), target(t, cells), samples(Samples(source)) {}
+  Overlaps(const Mesh &s, const Mesh &t, int cells, const Eigen::Matrix3d &rotation)
+      : source(s, cells), target(t, cells), samples(Samples(source)), back(rotation.transpose()) {}
 
   double IoU(const Candidate &c) const {
     double sum = 0;
-    for (const Sample &x : samples) sum += x.o * target.At((x.p - c.translation) / c.scale);
+    for (const Sample &x : samples) sum += x.o * target.At(ToPoint(back * ToEigen((x.p - c.translation) / c.scale)));
     const double h = source.grid.h, intersection = sum * h * h * h;
     return intersection / (source.volume + c.scale * c.scale * c.scale * target.volume - intersection);
   }
@@ -90,7 +92,7 @@ Overlap FitOverlap(const Mesh &source, const Mesh &target, const Similarity &sta
   const Candidate origin{start.scale, ToPoint(start.translation)};
   // The lattice, on the coarse grids: scales s_c 2^(i/8), translations every coarse cell
   // within the reach.
-  const Overlaps coarse(source, target, kOverlapCoarseCells);
+  const Overlaps coarse(source, target, kOverlapCoarseCells, start.rotation);
   const double hc = coarse.source.grid.h;
   const int reach = int(std::ceil(kOverlapReach * source.bbox.Diag() / hc));
   std::vector<Candidate> lattice;
@@ -101,7 +103,7 @@ Overlap FitOverlap(const Mesh &source, const Mesh &target, const Similarity &sta
           lattice.push_back({origin.scale * std::exp2(i / 8.0), origin.translation + Point3(x, y, z) * hc});
   Candidate found = coarse.Best(lattice).first;
   // Around the best, on the fine grids: steps of one, a half and a quarter cell.
-  const Overlaps fine(source, target, kOverlapCells);
+  const Overlaps fine(source, target, kOverlapCells, start.rotation);
   const double h = fine.source.grid.h;
   Overlap result;
   result.startIoU = fine.IoU(origin);

@@ -14,14 +14,15 @@
 // its own, w one cell of it (a part a cell thick still
 // counts, and the measure changes smoothly as the target slides):
 //   IoU(P) = I / (V0 + s^3 V1 - I),  I = integral of o0(x) o1(P^-1 x),  V = integral of o.
-// The search: P(p) = s p + t (no rotation: the meshes keep their orientation), from the
-// centre-and-scale placement (s_c, t_c): s = s_c 2^(i/8) for i = -4..4, t on a lattice of
+// The search: P(p) = s R p + t with the start's rotation R (the identity, or a quarter turn
+// where the pipeline turned the target: the search itself turns nothing), from the start
+// (s_c, t_c): s = s_c 2^(i/8) for i = -4..4, t on a lattice of
 // the source's cells within kOverlapReach of its bounding-box diagonal of t_c, on grids of
 // kOverlapCoarseCells; then from the best, on grids of kOverlapCells, to the best of the 81
 // neighbours (steps of one cell and a scale of 2^(1/16)) while one is better, then the same
 // with half and quarter steps.
 //
-// Inputs:  source, target (their own frames), start: the centre-and-scale placement
+// Inputs:  source, target (their own frames), start: the centre-and-scale placement, turned or not
 // Output:  the placement found, and the IoU at the start and at the end
 #pragma once
 

@@ -2,6 +2,7 @@
 
 #include "closest.h"
 #include "cut_axis.h"
+#include "eigen_point.h"
 #include "glue_rims.h"
 #include "grid.h"
 #include "hermite_field.h"
@@ -88,6 +89,7 @@ constexpr double kStretchedShare = 0.05;  // a mapped edge longer than this shar
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
 constexpr double kGlueReachCells = 6;  // a disc pair's rims end within this many cells of its place (glue_rims.h)
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
+constexpr int kTurnCells = 64;  // the grid on which quarter turns of the target are ranked (BestTurn), at most
 
 std::string Short(double x) {
   char text[32];
@@ -173,11 +175,12 @@ std::string DescribePlacement(const std::vector<AnchorPair> &anchors, Align alig
 // tracked point reaches such a part. A part shrinking into nothing is left to the linear
 // blend: its piece of the surface collapses, and the target stays covered (chair -> table:
 // the back withdraws; grown and withdrawn instead, it leaves 3 parts and 13 loops at 48 cells).
+bool BornFromNothing(const TopologyEvent &event, EventCut plan) {
+  return event.kind == TopologyEventKind::ComponentBorn && plan != EventCut::TargetGrid && plan != EventCut::SourceGrid;
+}
 bool GrowsFromNothing(const std::vector<TopologyEvent> &events, const std::vector<EventCut> &plan) {
   for (std::size_t e = 0; e < events.size(); ++e)
-    if (events[e].kind == TopologyEventKind::ComponentBorn && plan[e] != EventCut::TargetGrid &&
-        plan[e] != EventCut::SourceGrid)
-      return true;
+    if (BornFromNothing(events[e], plan[e])) return true;
   return false;
 }
 
@@ -205,15 +208,14 @@ void Place(Meshes &m, const Similarity &place) {
   m.targetSurface = MeasureSurfaceTopology(m.placed);
 }
 
-// The overlap placement of overlap.h, from centre-and-scale, and its words for the log.
-void PlaceByOverlap(Meshes &m, Report &rep) {
-  const Similarity start = FitPlacement(m.source, m.target, {}, {}, Align::CentreAndScale);
+// The overlap placement of overlap.h, from start (centre-and-scale, the target turned or not,
+// whose words rep.placement holds), and its words for the log.
+void PlaceByOverlap(Meshes &m, const Similarity &start, Report &rep) {
   const Overlap overlap = FitOverlap(m.source, m.target, start);
   char text[200];
-  std::snprintf(text, sizeof text, "centre-and-scale, then moved and scaled %.3g times to overlap the source's inside "
-                "most (insides' IoU %.2f, %.2f at centre-and-scale)", overlap.placement.scale / start.scale,
-                overlap.bestIoU, overlap.startIoU);
-  rep.placement = text;
+  std::snprintf(text, sizeof text, ", then moved and scaled %.3g times to overlap the source's inside most (insides' "
+                "IoU %.2f, %.2f before)", overlap.placement.scale / start.scale, overlap.bestIoU, overlap.startIoU);
+  rep.placement += text;
   Place(m, overlap.placement);
 }
 
@@ -227,7 +229,7 @@ void PrepareMeshes(const Mesh &sourceIn, const Mesh &targetIn, const std::vector
   m.sourceTopology = MeasureTopology(m.source);
   m.sourceSurface = MeasureSurfaceTopology(m.source);
   if (anchors.empty() && options.align == Align::Overlap)
-    PlaceByOverlap(m, rep);
+    PlaceByOverlap(m, FitPlacement(m.source, m.target, {}, {}, Align::CentreAndScale), rep);
   else
     Place(m, FitPlacement(m.source, m.target, m.targetAnchors, m.a, options.align));
 }
@@ -578,6 +580,78 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   rep.times.quality = Seconds(t0);
 }
 
+// The cuts and births the linear blend makes with the target placed as m says, on a grid of
+// at most kTurnCells cells (a quarter turn's rank, BestTurn), and the insides' overlap there.
+struct TurnRank {
+  int cuts = 0;    // events surgery plans to cut, and parts grown from nothing
+  int needed = 0;  // the fewest any placement can make: the parts and handles the morph changes
+  double iou = 0;  // |X0 n X1| / |X0 u X1| in grid nodes
+  bool operator<(const TurnRank &o) const { return cuts != o.cuts ? cuts < o.cuts : iou > o.iou; }
+};
+
+TurnRank RankPlacement(const Meshes &m, const Options &options, const Interrupt &interrupt) {
+  Options coarse = options;
+  coarse.gridResolution = std::min(options.gridResolution, kTurnCells);
+  const Grid grid = ChooseGrid(m, coarse, 0);
+  const Fields fields = SignedDistanceFields(m, grid, false, interrupt);
+  const Morph linear(fields.f0, fields.f1, m.a, m.b);
+  const MorphEvents e = FindEvents(linear, m, grid, coarse, [](double, const std::string &) {});
+  TurnRank rank;
+  const TopologyFrame &first = e.history.frames.front(), &last = e.history.frames.back();
+  rank.needed = std::abs(last.components - first.components) + std::abs(last.handles - first.handles);
+  for (std::size_t n = 0; n < e.plan.size(); ++n)
+    rank.cuts += e.plan[n] == EventCut::Planned || BornFromNothing(e.history.events[n], e.plan[n]);
+  std::size_t both = 0, either = 0;
+  for (std::size_t n = 0; n < fields.f0.values.size(); ++n) {
+    const bool a = fields.f0.values[n] < 0, b = fields.f1.values[n] < 0;
+    both += a && b, either += a || b;
+  }
+  rank.iou = either ? double(both) / either : 0;
+  return rank;
+}
+
+struct Turn {
+  bool better = false;  // a turn ranks above the target as it is
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  std::string words;  // "turned 90 degrees about the x axis (the linear blend's cuts and births: 0, 12 as it is)"
+};
+
+// The quarter turn of the target about its centroid, from the centre-and-scale placement
+// `start`, under which the linear blend makes the fewest cuts and births (then the insides
+// overlap most; then the smallest angle), if that is fewer than the target as it is makes.
+// Why: a handle is carried by the morph only where the two meshes' handles overlap; a torus
+// mapped onto the same torus standing up (ring1 -> ring1 turned a quarter about x, 64 cells)
+// loses its handle and gains the other: 2 cuts, 4 loops where none are needed. Meshes often
+// come with another axis up (y-up and z-up files). A quarter turn is enough there, and the
+// linear blend's events are a cheap, exact measure of what the turn costs (its events are
+// found before any point moves). m is left placed at the last turn tried.
+Turn BestTurn(Meshes &m, const Similarity &start, const Options &options, const Stage &stage, const Interrupt &interrupt) {
+  Place(m, start);
+  const TurnRank still = RankPlacement(m, options, interrupt);
+  const Point3 centroid = SurfaceCentroid(m.target);
+  const std::vector<Eigen::Matrix3d> turns = QuarterTurns();
+  Turn best;
+  TurnRank bestRank = still;
+  for (std::size_t n = 0; n < turns.size() && still.cuts > still.needed; ++n) {
+    stage(0.5 * n / turns.size(), "ranking quarter turns");
+    Place(m, Turned(start, turns[n], centroid));
+    const TurnRank rank = RankPlacement(m, options, interrupt);
+    if (rank.cuts < still.cuts && rank < bestRank) bestRank = rank, best.better = true, best.rotation = turns[n];
+  }
+  best.words = DescribeTurn(best.rotation) + " (the linear blend's cuts and births: " + std::to_string(bestRank.cuts) +
+               ", " + std::to_string(still.cuts) + " as it is)";
+  return best;
+}
+
+// Whether the map `other` replaces `current`: it passes its own figures; else fewer failures,
+// and no more area wrong. Where the cut is not checked (tori that intersect each other), 3
+// tori overlapped by a sphere failed only on coverage (36.5%) against 6.8% flipped and a long
+// edge at centre-and-scale. (Sphere -> four tori in a row at 48 cells: 0.12% flipped
+// overlapped, passing, against 0.02% and an edge of 11% of the diagonal at centre-and-scale.)
+bool Replaces(const Report &other, const Report &current) {
+  return Better(other, current) && (Failures(other) == 0 || WrongArea(other) <= WrongArea(current));
+}
+
 // The map with the target placed as m says: the grid, f0 and f1, the morph, its events and
 // the step loop (Attempt), into result (whose report holds what the stages before filled in).
 // The morph (morph.h) is the linear blend, unless it grows a part of the target from nothing
@@ -641,6 +715,36 @@ void MapPlaced(Meshes &m, const std::vector<AnchorPair> &anchors, const Options 
   }
 }
 
+// The map at the placement m has, then, without anchors at centre-and-scale where that map
+// fails its own figures, at the placement that overlaps the insides most from it (overlap.h);
+// the better map kept. Not always that placement: scaled up 1.5 times to overlap the sphere
+// more, three tori in a row grow their outer tori from farther away (sphere -> ring3 at 48
+// cells: 63% covered, 95% at centre-and-scale); chair -> table at centre-and-scale passes
+// through handles that open and close again (the table's top halfway up the chair's back),
+// and overlapped it passes through no event.
+void MapFromPlacement(Meshes &m, const std::vector<AnchorPair> &anchors, const Options &options,
+                      const std::vector<Point3> &samples, Result &result, const Stage &outer, const Interrupt &interrupt) {
+  double reached = 0;
+  const Stage stage = [&](double share, const std::string &name) { outer(reached = share, name); };
+  const Report base = result.report;
+  const Similarity start = m.place;
+  MapPlaced(m, anchors, options, samples, result, stage, interrupt);
+  if (!anchors.empty() || options.align != Align::CentreAndScale || Failures(result.report) == 0) return;
+  const double from = reached;
+  const Stage rest = [&, from](double share, const std::string &name) {
+    stage(from + (1 - from) * share, "overlapping placement: " + name);
+  };
+  Result other;
+  other.report = base;
+  PlaceByOverlap(m, start, other.report);
+  MapPlaced(m, anchors, options, samples, other, rest, interrupt);
+  const std::string first = Summary(result.report), second = Summary(other.report);
+  const bool keepOther = Replaces(other.report, result.report);
+  if (keepOther) Adopt(result, other);
+  result.report.placementsTried = "first centre-and-scale: " + first + (keepOther ? "" : ", kept") +
+                                  "; then overlapping: " + second + (keepOther ? ", kept" : "");
+}
+
 } // namespace
 
 void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<AnchorPair> &anchors,
@@ -676,34 +780,35 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   PrepareMeshes(sourceIn, targetIn, anchors, options, m, rep);
   rep.sourceVertices = m.source.vn;
   const Report base = rep;
-  MapPlaced(m, anchors, options, samples, result, stage, interrupt);
-  // Without anchors, where the map at centre-and-scale fails its own figures, the placement
-  // that overlaps the insides most (overlap.h) is tried as well and the better map kept.
-  // Not always that placement: scaled up 1.5 times to overlap the sphere more, three tori in
-  // a row grow their outer tori from farther away (sphere -> ring3 at 48 cells: 63% covered,
-  // 95% at centre-and-scale); chair -> table at centre-and-scale passes through handles that
-  // open and close again (the table's top halfway up the chair's back), and overlapped it
-  // passes through no event.
+  MapFromPlacement(m, anchors, options, samples, result, stage, interrupt);
+  // Without anchors, where the target as it is gives no map that passes, the target turned a
+  // quarter (QuarterTurns) where the morph then makes fewer cuts and births.
   if (anchors.empty() && options.align == Align::CentreAndScale && Failures(result.report) > 0) {
     const double from = reached;
     const Stage rest = [&, from](double share, const std::string &name) {
-      stage(from + (1 - from) * share, "overlapping placement: " + name);
+      stage(from + (1 - from) * share, "turned target: " + name);
     };
-    Result other;
-    other.report = base;
-    PlaceByOverlap(m, other.report);
-    MapPlaced(m, anchors, options, samples, other, rest, interrupt);
-    const std::string first = Summary(result.report), second = Summary(other.report);
-    // A map that passes its own figures; else fewer failures, and no more area wrong: where
-    // the cut is not checked (tori that intersect each other), 3 tori overlapped by a sphere
-    // failed only on coverage (36.5%) against 6.8% flipped and a long edge at
-    // centre-and-scale. (Sphere -> four tori in a row at 48 cells: 0.12% flipped overlapped,
-    // passing, against 0.02% and an edge of 11% of the diagonal at centre-and-scale.)
-    const bool keepOther = Better(other.report, result.report) &&
-                           (Failures(other.report) == 0 || WrongArea(other.report) <= WrongArea(result.report));
-    if (keepOther) Adopt(result, other);
-    result.report.placementsTried = "first centre-and-scale: " + first + (keepOther ? "" : ", kept") +
-                                    "; then overlapping: " + second + (keepOther ? ", kept" : "");
+    const Similarity start = FitPlacement(m.source, m.target, {}, {}, Align::CentreAndScale);
+    const Turn turn = BestTurn(m, start, options, rest, interrupt);
+    if (turn.better) {
+      Result other;
+      other.report = base;
+      other.report.placement += ", " + turn.words;
+      Place(m, Turned(start, turn.rotation, SurfaceCentroid(m.target)));
+      MapFromPlacement(m, anchors, options, samples, other, [&](double share, const std::string &name) { rest(0.5 + 0.5 * share, name); },
+                       interrupt);
+      // A turned map is not the one the user placed: it replaces only a map with more failures.
+      const bool keepOther = Failures(other.report) < Failures(result.report);
+      auto tried = [](const Report &r) { return r.placementsTried.empty() ? Summary(r) : r.placementsTried; };
+      const std::string asItIs = tried(result.report), turned = tried(other.report);
+      if (keepOther) {
+        Adopt(result, other);
+        result.report.warnings.push_back("the target was " + turn.words +
+                                         " to map it: give anchor pairs to choose its orientation yourself");
+      }
+      result.report.placementsTried = "the target as it is (" + asItIs + ")" + (keepOther ? "" : ", kept") +
+                                      "; then " + turn.words + " (" + turned + ")" + (keepOther ? ", kept" : "");
+    }
   }
   result.report.peakMemoryKiB = PeakMemoryKiB();
   stage(1.0, "done");

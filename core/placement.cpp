@@ -188,6 +188,50 @@ MirrorTest TestMirror(const std::vector<Point3> &from, const std::vector<Point3>
   return test;
 }
 
+std::vector<Eigen::Matrix3d> QuarterTurns() {
+  std::vector<std::pair<double, Eigen::Matrix3d>> turns;  // angle, rotation
+  const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto &o : order)
+    for (int signs = 0; signs < 8; ++signs) {
+      Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
+      for (int a = 0; a < 3; ++a) r(a, o[a]) = (signs >> a & 1) ? -1 : 1;
+      if (r.determinant() < 0 || r.isIdentity()) continue;
+      turns.push_back({std::acos(std::clamp((r.trace() - 1) / 2, -1.0, 1.0)), r});
+    }
+  std::stable_sort(turns.begin(), turns.end(), [](const auto &a, const auto &b) { return a.first < b.first - 1e-9; });
+  std::vector<Eigen::Matrix3d> out;
+  for (const auto &t : turns) out.push_back(t.second);
+  return out;
+}
+
+Similarity Turned(const Similarity &p, const Eigen::Matrix3d &r, const Point3 &c) {
+  // p(r (x - c) + c) = s R r x + s R (c - r c) + t
+  Similarity s = p;
+  const Eigen::Vector3d ce = ToEigen(c);
+  s.rotation = p.rotation * r;
+  s.translation = p.scale * (p.rotation * (ce - r * ce)) + p.translation;
+  return s;
+}
+
+std::string DescribeTurn(const Eigen::Matrix3d &r) {
+  const Eigen::AngleAxisd turn(r);
+  Eigen::Vector3d axis = turn.axis() / turn.axis().cwiseAbs().maxCoeff();
+  if (std::abs(turn.angle() - M_PI) < 1e-6) {  // a half turn about -a is one about a: the first axis component positive
+    const int first = std::abs(axis[0]) > 1e-6 ? 0 : std::abs(axis[1]) > 1e-6 ? 1 : 2;
+    if (axis[first] < 0) axis = -axis;
+  }
+  const long degrees = std::lround(turn.angle() * 180 / M_PI);
+  char text[120];
+  for (int a = 0; a < 3; ++a)
+    if (std::abs(axis[a]) > 1 - 1e-6 && axis.cwiseAbs().sum() < 1 + 1e-6) {
+      std::snprintf(text, sizeof text, "turned %ld degrees about the %s%c axis", degrees, axis[a] < 0 ? "-" : "", "xyz"[a]);
+      return text;
+    }
+  std::snprintf(text, sizeof text, "turned %ld degrees about (%ld, %ld, %ld)", degrees, std::lround(axis[0]),
+                std::lround(axis[1]), std::lround(axis[2]));
+  return text;
+}
+
 // Applies s to m in place.
 //   m:  mesh; live vertex positions become s(p), vertex and face normals are rotated
 //       (their lengths are kept), and the bounding box is recomputed

@@ -15,6 +15,7 @@
 #include "mesh.h"
 
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 namespace eulermap {
@@ -51,5 +52,18 @@ MirrorTest TestMirror(const std::vector<Point3> &from, const std::vector<Point3>
 
 // Applies s to every vertex of m (positions and normals).
 void Transform(Mesh &m, const Similarity &s);
+
+// The 23 turns of the cube other than the identity (the proper rotations that permute the
+// axes and flip their signs): 6 of 90 degrees about the axes, 8 of 120 degrees about the
+// cube's diagonals, 3 of 180 degrees about the axes and 6 about its faces' diagonals, the
+// smallest angle first.
+std::vector<Eigen::Matrix3d> QuarterTurns();
+
+// The placement p with the target turned by r about the point c (its centroid) first:
+// x -> p(r (x - c) + c).
+Similarity Turned(const Similarity &p, const Eigen::Matrix3d &r, const Point3 &c);
+
+// "turned 90 degrees about the x axis", "turned 120 degrees about (1, -1, 1)".
+std::string DescribeTurn(const Eigen::Matrix3d &r);
 
 } // namespace eulermap

@@ -154,6 +154,39 @@ std::vector<Made> Catalogue() {
                         [](const Point3 &p) { return Ball(p, Point3(0.6, 0, 0), 0.35); },
                         [](const Point3 &p) { return Block(p, Point3(-0.6, -0.1, -0.1), Point3(0.6, 0.1, 0.1)); }}),
                  Box3(Point3(-1.05, -0.45, -0.45), Point3(1.05, 0.45, 0.45))});
+  // Shapes made after the families, to check them on inputs they were not tuned on.
+  for (int holes = 2; holes <= 3; ++holes)  // a flat oval slab with round holes in a row
+    all.push_back({{"plate" + std::to_string(holes), 1, holes},
+                   [holes](const Point3 &p) {
+                     double d = Ellipsoid(Point3(p.X(), p.Y(), p.Z()), Point3(0.45 * holes + 0.2, 0.45, 0.15));
+                     for (int h = 0; h < holes; ++h)
+                       d = std::max(d, 0.16 - std::hypot(p.X() - (h - (holes - 1) / 2.0) * 0.5, p.Y()));
+                     return d;
+                   },
+                   Box3(Point3(-0.45 * holes - 0.3, -0.55, -0.25), Point3(0.45 * holes + 0.3, 0.55, 0.25))});
+  all.push_back({{"thin_ring", 1, 1}, [](const Point3 &p) { return Torus(p, Point3(0, 0, 0), 0.6, 0.1); },
+                 Box3(Point3(-0.8, -0.8, -0.2), Point3(0.8, 0.8, 0.2))});
+  all.push_back({{"box_tunnel", 1, 1},  // a cube pierced by a square tunnel
+                 [](const Point3 &p) {
+                   return std::max(Block(p, Point3(-0.5, -0.5, -0.5), Point3(0.5, 0.5, 0.5)),
+                                   -Block(p, Point3(-0.2, -1, -0.2), Point3(0.2, 1, 0.2)));
+                 },
+                 Box3(Point3(-0.6, -0.6, -0.6), Point3(0.6, 0.6, 0.6))});
+  all.push_back({{"two_balls", 2, 0},  // a large and a small ball apart
+                 Union({[](const Point3 &p) { return Ball(p, Point3(-0.35, 0, 0), 0.6); },
+                        [](const Point3 &p) { return Ball(p, Point3(0.75, 0, 0), 0.3); }}),
+                 Box3(Point3(-1.05, -0.7, -0.7), Point3(1.15, 0.7, 0.7))});
+  all.push_back({{"snowman", 1, 0},  // the same two balls, overlapping
+                 Union({[](const Point3 &p) { return Ball(p, Point3(-0.2, 0, 0), 0.6); },
+                        [](const Point3 &p) { return Ball(p, Point3(0.55, 0, 0), 0.3); }}),
+                 Box3(Point3(-0.9, -0.7, -0.7), Point3(0.95, 0.7, 0.7))});
+  std::vector<Sdf> arms = Seat(0.55);  // a chair with arm rests on posts from the seat's front corners
+  AddSolidBack(arms);
+  for (double x : {-kHalf, kHalf - kLeg}) {
+    arms.push_back([x](const Point3 &p) { return Block(p, Point3(x, -kHalf, 0.5), Point3(x + kLeg, -kHalf + kLeg, 0.85)); });
+    arms.push_back([x](const Point3 &p) { return Block(p, Point3(x, -kHalf, 0.8), Point3(x + kLeg, kHalf, 0.9)); });
+  }
+  all.push_back({{"armchair", 1, 2}, Union(arms), furniture});
   return all;
 }
 
@@ -169,8 +202,18 @@ const std::vector<Shape> &Shapes() {
 }
 
 void MakeShape(const std::string &name, Mesh &m, int cells) {
-  for (const Made &made : Catalogue())
-    if (made.shape.name == name) return MakeImplicit(m, made.sdf, made.box, cells);
+  const std::string turned = "_turned";
+  const bool turn = name.size() > turned.size() && name.compare(name.size() - turned.size(), turned.size(), turned) == 0;
+  const std::string base = turn ? name.substr(0, name.size() - turned.size()) : name;
+  for (const Made &made : Catalogue()) {
+    if (made.shape.name != base) continue;
+    if (!turn) return MakeImplicit(m, made.sdf, made.box, cells);
+    // Turned a quarter about the x axis: (x, y, z) -> (x, -z, y).
+    const Sdf sdf = made.sdf;
+    const Box3 &b = made.box;
+    return MakeImplicit(m, [sdf](const Point3 &p) { return sdf(Point3(p.X(), p.Z(), -p.Y())); },
+                        Box3(Point3(b.min.X(), -b.max.Z(), b.min.Y()), Point3(b.max.X(), -b.min.Z(), b.max.Y())), cells);
+  }
   throw std::invalid_argument("no shape named " + name);
 }
 

@@ -10,6 +10,12 @@
 //   chair_rails             chair with stretcher rails between the legs          genus 4
 //   chair_slats             chair whose back is a frame with 2 slats             genus 3
 //   table                   a top on 4 legs                                      genus 0
+//   stool, bench, frame, mug, ladder, dumbbell (see shapes.cpp)
+//   plate2, plate3          a flat oval slab with 2 or 3 round holes             genus 2, 3
+//   thin_ring               a torus with a thin tube (ring 0.6, tube 0.1)        genus 1
+//   box_tunnel              a cube pierced by a square tunnel                    genus 1
+//   two_balls, snowman      a large and a small ball, apart / overlapping        2 parts / genus 0
+//   armchair                chair with arm rests on posts                        genus 2
 #pragma once
 
 #include "core/mesh.h"

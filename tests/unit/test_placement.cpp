@@ -1,6 +1,7 @@
 // Unit tests of placement.h: the similarity and its inverse, the fit to 1, 2, collinear and
 // 3 or more anchors (Umeyama), centre-and-scale (centroids and diagonals agree), the mirror
-// test of the anchors, and Transform.
+// test of the anchors, Transform, and the quarter turns of the target (QuarterTurns, Turned,
+// DescribeTurn).
 #include "core/eigen_point.h"
 #include "core/placement.h"
 #include "tests/support/meshes.h"
@@ -158,6 +159,50 @@ TEST(Placement, TheMirrorTestTellsSwappedSidesFromASimilarity) {
   EXPECT_EQ(three.residual, 0);
   EXPECT_EQ(three.mirroredResidual, 0);
   EXPECT_FALSE(three.Mirrored());
+}
+
+TEST(Placement, TheQuarterTurnsAreTheCubesOtherRotationsSmallestFirst) {
+  const std::vector<Eigen::Matrix3d> turns = QuarterTurns();
+  ASSERT_EQ(turns.size(), 23u);
+  double last = 0;
+  int quarter = 0, third = 0, half = 0;
+  for (std::size_t n = 0; n < turns.size(); ++n) {
+    const Eigen::Matrix3d &r = turns[n];
+    EXPECT_TRUE((r * r.transpose()).isIdentity(1e-12));
+    EXPECT_NEAR(r.determinant(), 1, 1e-12);
+    EXPECT_FALSE(r.isIdentity());
+    EXPECT_TRUE((r.array().abs() == 1).count() == 3);  // a signed permutation
+    for (std::size_t m = 0; m < n; ++m) EXPECT_FALSE(r.isApprox(turns[m]));
+    const double angle = Eigen::AngleAxisd(r).angle();
+    EXPECT_GE(angle, last - 1e-9);
+    last = angle;
+    quarter += std::abs(angle - M_PI / 2) < 1e-9, third += std::abs(angle - 2 * M_PI / 3) < 1e-9,
+        half += std::abs(angle - M_PI) < 1e-9;
+  }
+  EXPECT_EQ(quarter, 6);
+  EXPECT_EQ(third, 8);
+  EXPECT_EQ(half, 9);
+}
+
+TEST(Placement, TurnedTurnsTheTargetAboutItsCentroidFirst) {
+  const Similarity p = KnownSimilarity();
+  const Point3 c(0.4, 2, -1);
+  const Eigen::Matrix3d r = QuarterTurns()[0];
+  const Similarity t = Turned(p, r, c);
+  EXPECT_LT(vcg::Distance(t.Apply(c), p.Apply(c)), 1e-12);  // the centroid stays where p puts it
+  for (const Point3 &v : {Point3(1, 0, 0), Point3(0.3, -2, 0.7)})
+    EXPECT_LT(vcg::Distance(t.Apply(c + v), p.Apply(c + ToPoint(r * ToEigen(v)))), 1e-12);
+}
+
+TEST(Placement, DescribeTurnNamesTheAngleAndTheAxis) {
+  EXPECT_EQ(DescribeTurn(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix()),
+            "turned 90 degrees about the x axis");
+  EXPECT_EQ(DescribeTurn(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix()),
+            "turned 90 degrees about the -z axis");
+  EXPECT_EQ(DescribeTurn(Eigen::AngleAxisd(2 * M_PI / 3, Eigen::Vector3d(1, -1, 1).normalized()).toRotationMatrix()),
+            "turned 120 degrees about (1, -1, 1)");
+  EXPECT_EQ(DescribeTurn(Eigen::AngleAxisd(M_PI, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix()),
+            "turned 180 degrees about (0, 1, 1)");
 }
 
 } // namespace
