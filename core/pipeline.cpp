@@ -89,7 +89,7 @@ constexpr double kStretchedShare = 0.05;  // a mapped edge longer than this shar
 constexpr double kFarAnchorCells = 3;  // an anchor the grid resolves ends within a cell or so
 constexpr double kGlueReachCells = 6;  // a disc pair's rims end within this many cells of its place (glue_rims.h)
 constexpr double kFarTipAnchorCells = 4.5;  // one on a tip the grid cuts short: 1.5-3.3 cells measured
-constexpr int kTurnCells = 64;  // the grid on which quarter turns of the target are ranked (BestTurn), at most
+constexpr int kTurnCells = 64;  // the grid on which turns of the target are ranked (BestTurn), at most
 
 std::string Short(double x) {
   char text[32];
@@ -616,24 +616,25 @@ struct Turn {
   std::string words;  // "turned 90 degrees about the x axis (the linear blend's cuts and births: 0, 12 as it is)"
 };
 
-// The quarter turn of the target about its centroid, from the centre-and-scale placement
-// `start`, under which the linear blend makes the fewest cuts and births (then the insides
-// overlap most; then the smallest angle), if that is fewer than the target as it is makes.
-// Why: a handle is carried by the morph only where the two meshes' handles overlap; a torus
-// mapped onto the same torus standing up (ring1 -> ring1 turned a quarter about x, 64 cells)
-// loses its handle and gains the other: 2 cuts, 4 loops where none are needed. Meshes often
-// come with another axis up (y-up and z-up files). A quarter turn is enough there, and the
-// linear blend's events are a cheap, exact measure of what the turn costs (its events are
-// found before any point moves). m is left placed at the last turn tried.
+// The turn of the target about its centroid (placement.h, CandidateTurns: the cube's quarter
+// turns, then those laying its principal axes on the source's), from the centre-and-scale
+// placement `start`, under which the linear blend makes the fewest cuts and births (then the
+// insides overlap most; then the one listed first), if that is fewer than the target as it
+// is makes. Why: a handle is carried by the morph only where the two meshes' handles
+// overlap; a torus mapped onto the same torus standing up (ring1 -> ring1 turned a quarter
+// about x, 64 cells) loses its handle and gains the other: 2 cuts, 4 loops where none are
+// needed. Meshes often come with another axis up (y-up and z-up files), scans at any angle.
+// The linear blend's events are a cheap, exact measure of what a turn costs (found before
+// any point moves). m is left placed at the last turn tried.
 Turn BestTurn(Meshes &m, const Similarity &start, const Options &options, const Stage &stage, const Interrupt &interrupt) {
   Place(m, start);
   const TurnRank still = RankPlacement(m, options, interrupt);
   const Point3 centroid = SurfaceCentroid(m.target);
-  const std::vector<Eigen::Matrix3d> turns = QuarterTurns();
+  const std::vector<Eigen::Matrix3d> turns = CandidateTurns(m.source, m.target);
   Turn best;
   TurnRank bestRank = still;
   for (std::size_t n = 0; n < turns.size() && still.cuts > still.needed; ++n) {
-    stage(0.5 * n / turns.size(), "ranking quarter turns");
+    stage(0.5 * n / turns.size(), "ranking turns of the target");
     Place(m, Turned(start, turns[n], centroid));
     const TurnRank rank = RankPlacement(m, options, interrupt);
     if (rank.cuts < still.cuts && rank < bestRank) bestRank = rank, best.better = true, best.rotation = turns[n];
@@ -781,8 +782,8 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
   rep.sourceVertices = m.source.vn;
   const Report base = rep;
   MapFromPlacement(m, anchors, options, samples, result, stage, interrupt);
-  // Without anchors, where the target as it is gives no map that passes, the target turned a
-  // quarter (QuarterTurns) where the morph then makes fewer cuts and births.
+  // Without anchors, where the target as it is gives no map that passes, the target turned
+  // (BestTurn) where the morph then makes fewer cuts and births.
   if (anchors.empty() && options.align == Align::CentreAndScale && Failures(result.report) > 0) {
     const double from = reached;
     const Stage rest = [&, from](double share, const std::string &name) {

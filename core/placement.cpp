@@ -8,6 +8,7 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -188,20 +189,69 @@ MirrorTest TestMirror(const std::vector<Point3> &from, const std::vector<Point3>
   return test;
 }
 
-std::vector<Eigen::Matrix3d> QuarterTurns() {
-  std::vector<std::pair<double, Eigen::Matrix3d>> turns;  // angle, rotation
+namespace {
+
+// The 24 proper rotations that permute the axes and flip their signs (identity included).
+std::vector<Eigen::Matrix3d> SignedPermutations() {
+  std::vector<Eigen::Matrix3d> out;
   const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   for (const auto &o : order)
     for (int signs = 0; signs < 8; ++signs) {
       Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
       for (int a = 0; a < 3; ++a) r(a, o[a]) = (signs >> a & 1) ? -1 : 1;
-      if (r.determinant() < 0 || r.isIdentity()) continue;
-      turns.push_back({std::acos(std::clamp((r.trace() - 1) / 2, -1.0, 1.0)), r});
+      if (r.determinant() > 0) out.push_back(r);
     }
-  std::stable_sort(turns.begin(), turns.end(), [](const auto &a, const auto &b) { return a.first < b.first - 1e-9; });
-  std::vector<Eigen::Matrix3d> out;
-  for (const auto &t : turns) out.push_back(t.second);
   return out;
+}
+
+double Angle(const Eigen::Matrix3d &r) { return std::acos(std::clamp((r.trace() - 1) / 2, -1.0, 1.0)); }
+
+// The rotations, the smallest angle first (stable: equal angles keep their order).
+void ByAngle(std::vector<Eigen::Matrix3d> &turns) {
+  std::stable_sort(turns.begin(), turns.end(),
+                   [](const Eigen::Matrix3d &a, const Eigen::Matrix3d &b) { return Angle(a) < Angle(b) - 1e-9; });
+}
+
+} // namespace
+
+std::vector<Eigen::Matrix3d> QuarterTurns() {
+  std::vector<Eigen::Matrix3d> turns;
+  for (const Eigen::Matrix3d &r : SignedPermutations())
+    if (!r.isIdentity()) turns.push_back(r);
+  ByAngle(turns);
+  return turns;
+}
+
+Eigen::Matrix3d PrincipalAxes(const Mesh &mesh) {
+  // Per face, the second moment of a uniform triangle about the centroid c:
+  // area / 12 (sum_i v_i v_i^T + s s^T), v_i its corners less c, s = v_0 + v_1 + v_2.
+  const Eigen::Vector3d c = ToEigen(SurfaceCentroid(mesh));
+  Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+  for (const auto &f : mesh.face) {
+    if (f.IsD()) continue;
+    const Eigen::Vector3d v0 = ToEigen(f.cP(0)) - c, v1 = ToEigen(f.cP(1)) - c, v2 = ToEigen(f.cP(2)) - c, s = v0 + v1 + v2;
+    const double area = 0.5 * (v1 - v0).cross(v2 - v0).norm();
+    moment += area / 12 * (v0 * v0.transpose() + v1 * v1.transpose() + v2 * v2.transpose() + s * s.transpose());
+  }
+  Eigen::Matrix3d axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(moment).eigenvectors();
+  if (axes.determinant() < 0) axes.col(2) *= -1;
+  return axes;
+}
+
+std::vector<Eigen::Matrix3d> CandidateTurns(const Mesh &source, const Mesh &target) {
+  std::vector<Eigen::Matrix3d> turns = QuarterTurns(), aligned;
+  const Eigen::Matrix3d s = PrincipalAxes(source), t = PrincipalAxes(target);
+  for (const Eigen::Matrix3d &q : SignedPermutations()) aligned.push_back(s * q * t.transpose());
+  ByAngle(aligned);
+  auto listed = [&](const Eigen::Matrix3d &r) {
+    if (Angle(r) < 1e-6) return true;  // the target as it is
+    for (const Eigen::Matrix3d &u : turns)
+      if ((u - r).norm() < 1e-6) return true;
+    return false;
+  };
+  for (const Eigen::Matrix3d &r : aligned)
+    if (!listed(r)) turns.push_back(r);
+  return turns;
 }
 
 Similarity Turned(const Similarity &p, const Eigen::Matrix3d &r, const Point3 &c) {
@@ -227,8 +277,15 @@ std::string DescribeTurn(const Eigen::Matrix3d &r) {
       std::snprintf(text, sizeof text, "turned %ld degrees about the %s%c axis", degrees, axis[a] < 0 ? "-" : "", "xyz"[a]);
       return text;
     }
-  std::snprintf(text, sizeof text, "turned %ld degrees about (%ld, %ld, %ld)", degrees, std::lround(axis[0]),
-                std::lround(axis[1]), std::lround(axis[2]));
+  if ((axis - axis.array().round().matrix()).norm() < 1e-6) {  // a diagonal of the cube or of its faces
+    std::snprintf(text, sizeof text, "turned %ld degrees about (%ld, %ld, %ld)", degrees, std::lround(axis[0]),
+                  std::lround(axis[1]), std::lround(axis[2]));
+    return text;
+  }
+  const Eigen::Vector3d unit = axis.normalized();
+  auto hundredths = [](double x) { return std::round(100 * x) / 100 + 0.0; };  // + 0.0: no "-0.00"
+  std::snprintf(text, sizeof text, "turned %ld degrees about (%.2f, %.2f, %.2f)", degrees, hundredths(unit[0]),
+                hundredths(unit[1]), hundredths(unit[2]));
   return text;
 }
 

@@ -59,11 +59,23 @@ void Transform(Mesh &m, const Similarity &s);
 // smallest angle first.
 std::vector<Eigen::Matrix3d> QuarterTurns();
 
+// The principal axes of the mesh's surface: the eigenvectors of its area-weighted second
+// moment about its centroid, as columns, the smallest moment first, a proper rotation.
+Eigen::Matrix3d PrincipalAxes(const Mesh &mesh);
+
+// The turns of the target tried where it does not map as it is (pipeline.cpp, BestTurn):
+// QuarterTurns, then, for meshes turned by other angles, the 24 rotations taking the
+// target's principal axes onto the source's (each axis onto any, either way: the axes'
+// order and signs say little about which parts match), the smallest angle first, less the
+// identity and those already listed (for meshes whose axes are the coordinate axes, all).
+std::vector<Eigen::Matrix3d> CandidateTurns(const Mesh &source, const Mesh &target);
+
 // The placement p with the target turned by r about the point c (its centroid) first:
 // x -> p(r (x - c) + c).
 Similarity Turned(const Similarity &p, const Eigen::Matrix3d &r, const Point3 &c);
 
-// "turned 90 degrees about the x axis", "turned 120 degrees about (1, -1, 1)".
+// "turned 90 degrees about the x axis", "turned 120 degrees about (1, -1, 1)", "turned 47
+// degrees about (0.41, -0.20, 0.89)".
 std::string DescribeTurn(const Eigen::Matrix3d &r);
 
 } // namespace eulermap

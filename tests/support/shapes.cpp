@@ -4,6 +4,8 @@
 
 #include "core/quality.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -202,17 +204,35 @@ const std::vector<Shape> &Shapes() {
 }
 
 void MakeShape(const std::string &name, Mesh &m, int cells) {
-  const std::string turned = "_turned";
-  const bool turn = name.size() > turned.size() && name.compare(name.size() - turned.size(), turned.size(), turned) == 0;
-  const std::string base = turn ? name.substr(0, name.size() - turned.size()) : name;
+  // NAME_turned: a quarter turn about x, (x, y, z) -> (x, -z, y); NAME_tilted: 40 degrees about
+  // x, then 25 about y. The shape's function is read at R^T p, its box turned with it.
+  Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
+  std::string base = name;
+  auto ends = [&](const std::string &suffix) {
+    if (base.size() <= suffix.size() || base.compare(base.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+    base.resize(base.size() - suffix.size());
+    return true;
+  };
+  if (ends("_turned"))
+    turn = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  else if (ends("_tilted"))
+    turn = (Eigen::AngleAxisd(25 * M_PI / 180, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(40 * M_PI / 180, Eigen::Vector3d::UnitX()))
+               .toRotationMatrix();
   for (const Made &made : Catalogue()) {
     if (made.shape.name != base) continue;
-    if (!turn) return MakeImplicit(m, made.sdf, made.box, cells);
-    // Turned a quarter about the x axis: (x, y, z) -> (x, -z, y).
     const Sdf sdf = made.sdf;
-    const Box3 &b = made.box;
-    return MakeImplicit(m, [sdf](const Point3 &p) { return sdf(Point3(p.X(), p.Z(), -p.Y())); },
-                        Box3(Point3(b.min.X(), -b.max.Z(), b.min.Y()), Point3(b.max.X(), -b.min.Z(), b.max.Y())), cells);
+    const Eigen::Matrix3d back = turn.transpose();
+    Box3 box;
+    for (int c = 0; c < 8; ++c) {
+      const Eigen::Vector3d corner((c & 1 ? made.box.max : made.box.min).X(), (c & 2 ? made.box.max : made.box.min).Y(),
+                                   (c & 4 ? made.box.max : made.box.min).Z());
+      const Eigen::Vector3d turned = turn * corner;
+      box.Add(Point3(turned.x(), turned.y(), turned.z()));
+    }
+    return MakeImplicit(m, [sdf, back](const Point3 &p) {
+      const Eigen::Vector3d q = back * Eigen::Vector3d(p.X(), p.Y(), p.Z());
+      return sdf(Point3(q.x(), q.y(), q.z()));
+    }, box, cells);
   }
   throw std::invalid_argument("no shape named " + name);
 }

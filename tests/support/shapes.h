@@ -16,6 +16,9 @@
 //   box_tunnel              a cube pierced by a square tunnel                    genus 1
 //   two_balls, snowman      a large and a small ball, apart / overlapping        2 parts / genus 0
 //   armchair                chair with arm rests on posts                        genus 2
+//   NAME_turned             any of them turned a quarter about the x axis (as a file made
+//                           with another axis up comes); NAME_tilted: 40 degrees about x,
+//                           then 25 about y
 #pragma once
 
 #include "core/mesh.h"

@@ -1,7 +1,7 @@
 // Unit tests of placement.h: the similarity and its inverse, the fit to 1, 2, collinear and
 // 3 or more anchors (Umeyama), centre-and-scale (centroids and diagonals agree), the mirror
-// test of the anchors, Transform, and the quarter turns of the target (QuarterTurns, Turned,
-// DescribeTurn).
+// test of the anchors, Transform, and the turns of the target (QuarterTurns, PrincipalAxes,
+// CandidateTurns, Turned, DescribeTurn).
 #include "core/eigen_point.h"
 #include "core/placement.h"
 #include "tests/support/meshes.h"
@@ -203,6 +203,30 @@ TEST(Placement, DescribeTurnNamesTheAngleAndTheAxis) {
             "turned 120 degrees about (1, -1, 1)");
   EXPECT_EQ(DescribeTurn(Eigen::AngleAxisd(M_PI, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix()),
             "turned 180 degrees about (0, 1, 1)");
+  EXPECT_EQ(DescribeTurn(Eigen::AngleAxisd(0.82, Eigen::Vector3d(-0.84, -0.51, 0.19).normalized()).toRotationMatrix()),
+            "turned 47 degrees about (-0.84, -0.51, 0.19)");
+}
+
+TEST(Placement, CandidateTurnsLayTheTargetsPrincipalAxesOnTheSources) {
+  // A box 2 x 1 x 0.4 and the same box turned by an angle no quarter turn has.
+  Mesh source, target;
+  testing::MakeBox(source, Box3(Point3(-1, -0.5, -0.2), Point3(1, 0.5, 0.2)));
+  testing::MakeBox(target, Box3(Point3(-1, -0.5, -0.2), Point3(1, 0.5, 0.2)));
+  Similarity tilt;
+  tilt.rotation = (Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  Transform(target, tilt);
+  const Eigen::Matrix3d axes = PrincipalAxes(source);
+  EXPECT_NEAR(axes.determinant(), 1, 1e-9);
+  EXPECT_NEAR(std::abs(axes(2, 0)), 1, 1e-9);  // the smallest moment first: along z
+  EXPECT_NEAR(std::abs(axes(0, 2)), 1, 1e-9);  // the largest last: along x
+  const std::vector<Eigen::Matrix3d> turns = CandidateTurns(source, target);
+  EXPECT_EQ(turns.size(), 23u + 24u);  // the quarter turns, then 24 that align the axes
+  for (std::size_t n = 0; n < 23; ++n) EXPECT_TRUE(turns[n].isApprox(QuarterTurns()[n]));
+  bool undone = false;  // one of them turns the target back
+  for (const Eigen::Matrix3d &r : turns) undone = undone || (r * tilt.rotation).isIdentity(1e-6);
+  EXPECT_TRUE(undone);
+  EXPECT_EQ(CandidateTurns(source, source).size(), 23u);  // axes along the coordinate axes: nothing more
 }
 
 } // namespace
