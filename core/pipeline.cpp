@@ -611,9 +611,9 @@ TurnRank RankPlacement(const Meshes &m, const Options &options, const Interrupt 
 }
 
 struct Turn {
-  bool better = false;  // a turn ranks above the target as it is
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  std::string words;  // "turned 90 degrees about the x axis (the linear blend's cuts and births: 0, 12 as it is)"
+  bool better = false;  // a turn ranks above the target as it is; then:
+  Similarity placement;  // start with the target turned
+  std::string words;     // "turned 90 degrees about the x axis (the linear blend's cuts and births: 0, 12 as it is)"
 };
 
 // The turn of the target about its centroid (placement.h, CandidateTurns: the cube's quarter
@@ -633,14 +633,17 @@ Turn BestTurn(Meshes &m, const Similarity &start, const Options &options, const 
   const std::vector<Eigen::Matrix3d> turns = CandidateTurns(m.source, m.target);
   Turn best;
   TurnRank bestRank = still;
+  std::size_t chosen = 0;
   for (std::size_t n = 0; n < turns.size() && still.cuts > still.needed; ++n) {
     stage(0.5 * n / turns.size(), "ranking turns of the target");
-    Place(m, Turned(start, turns[n], centroid));
+    const Similarity turned = Turned(start, turns[n], centroid);
+    Place(m, turned);
     const TurnRank rank = RankPlacement(m, options, interrupt);
-    if (rank.cuts < still.cuts && rank < bestRank) bestRank = rank, best.better = true, best.rotation = turns[n];
+    if (rank.cuts < still.cuts && rank < bestRank) bestRank = rank, best.better = true, best.placement = turned, chosen = n;
   }
-  best.words = DescribeTurn(best.rotation) + " (the linear blend's cuts and births: " + std::to_string(bestRank.cuts) +
-               ", " + std::to_string(still.cuts) + " as it is)";
+  if (best.better)
+    best.words = DescribeTurn(turns[chosen]) + " (the linear blend's cuts and births: " + std::to_string(bestRank.cuts) +
+                 ", " + std::to_string(still.cuts) + " as it is)";
   return best;
 }
 
@@ -795,7 +798,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
       Result other;
       other.report = base;
       other.report.placement += ", " + turn.words;
-      Place(m, Turned(start, turn.rotation, SurfaceCentroid(m.target)));
+      Place(m, turn.placement);
       MapFromPlacement(m, anchors, options, samples, other, [&](double share, const std::string &name) { rest(0.5 + 0.5 * share, name); },
                        interrupt);
       // A turned map is not the one the user placed: it replaces only a map with more failures.
