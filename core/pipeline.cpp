@@ -617,8 +617,8 @@ struct Turn {
 };
 
 // The turn of the target about its centroid (placement.h, CandidateTurns: the cube's quarter
-// turns, then those laying its principal axes on the source's), from the centre-and-scale
-// placement `start`, under which the linear blend makes the fewest cuts and births (then the
+// turns, then those laying its principal axes on the source's), placed by centre-and-scale
+// as turned (placement.h, CentreAndScale), under which the linear blend makes the fewest cuts and births (then the
 // insides overlap most; then the one listed first), if that is fewer than the target as it
 // is makes. Why: a handle is carried by the morph only where the two meshes' handles
 // overlap; a torus mapped onto the same torus standing up (ring1 -> ring1 turned a quarter
@@ -626,17 +626,16 @@ struct Turn {
 // needed. Meshes often come with another axis up (y-up and z-up files), scans at any angle.
 // The linear blend's events are a cheap, exact measure of what a turn costs (found before
 // any point moves). m is left placed at the last turn tried.
-Turn BestTurn(Meshes &m, const Similarity &start, const Options &options, const Stage &stage, const Interrupt &interrupt) {
-  Place(m, start);
+Turn BestTurn(Meshes &m, const Options &options, const Stage &stage, const Interrupt &interrupt) {
+  Place(m, CentreAndScale(m.source, m.target));
   const TurnRank still = RankPlacement(m, options, interrupt);
-  const Point3 centroid = SurfaceCentroid(m.target);
   const std::vector<Eigen::Matrix3d> turns = CandidateTurns(m.source, m.target);
   Turn best;
   TurnRank bestRank = still;
   std::size_t chosen = 0;
   for (std::size_t n = 0; n < turns.size() && still.cuts > still.needed; ++n) {
     stage(0.5 * n / turns.size(), "ranking turns of the target");
-    const Similarity turned = Turned(start, turns[n], centroid);
+    const Similarity turned = CentreAndScale(m.source, m.target, turns[n]);
     Place(m, turned);
     const TurnRank rank = RankPlacement(m, options, interrupt);
     if (rank.cuts < still.cuts && rank < bestRank) bestRank = rank, best.better = true, best.placement = turned, chosen = n;
@@ -792,8 +791,7 @@ void ComputeMap(const Mesh &sourceIn, const Mesh &targetIn, const std::vector<An
     const Stage rest = [&, from](double share, const std::string &name) {
       stage(from + (1 - from) * share, "turned target: " + name);
     };
-    const Similarity start = FitPlacement(m.source, m.target, {}, {}, Align::CentreAndScale);
-    const Turn turn = BestTurn(m, start, options, rest, interrupt);
+    const Turn turn = BestTurn(m, options, rest, interrupt);
     if (turn.better) {
       Result other;
       other.report = base;

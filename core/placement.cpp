@@ -131,11 +131,7 @@ Similarity FitPlacement(const Mesh &source, const Mesh &target, const std::vecto
   const std::size_t n = from.size();
   if (n == 0) {
     if (align == Align::None) return s;
-    const Box3 bs = VertexBox(source), bt = VertexBox(target);
-    const double ds = bs.IsNull() ? 0 : bs.Diag(), dt = bt.IsNull() ? 0 : bt.Diag();
-    if (ds > 0 && dt > 0) s.scale = ds / dt;
-    s.translation = ToEigen(SurfaceCentroid(source)) - s.scale * ToEigen(SurfaceCentroid(target));
-    return s;
+    return CentreAndScale(source, target);
   }
 
   const Eigen::Matrix3Xd f = Columns(from), t = Columns(to);
@@ -254,12 +250,22 @@ std::vector<Eigen::Matrix3d> CandidateTurns(const Mesh &source, const Mesh &targ
   return turns;
 }
 
-Similarity Turned(const Similarity &p, const Eigen::Matrix3d &r, const Point3 &c) {
-  // p(r (x - c) + c) = s R r x + s R (c - r c) + t
-  Similarity s = p;
-  const Eigen::Vector3d ce = ToEigen(c);
-  s.rotation = p.rotation * r;
-  s.translation = p.scale * (p.rotation * (ce - r * ce)) + p.translation;
+// The diagonal of the mesh's box along the given axes (columns), about the origin.
+double Diagonal(const Mesh &mesh, const Eigen::Matrix3d &axes) {
+  Box3 box;
+  for (const auto &v : mesh.vert)
+    if (!v.IsD()) box.Add(ToPoint(axes.transpose() * ToEigen(v.cP())));
+  return box.IsNull() ? 0 : box.Diag();
+}
+
+Similarity CentreAndScale(const Mesh &source, const Mesh &target, const Eigen::Matrix3d &turn) {
+  const bool turned = !turn.isIdentity();
+  const double ds = Diagonal(source, turned ? PrincipalAxes(source) : Eigen::Matrix3d::Identity()),
+               dt = Diagonal(target, turned ? PrincipalAxes(target) : Eigen::Matrix3d::Identity());
+  Similarity s;
+  s.rotation = turn;
+  if (ds > 0 && dt > 0) s.scale = ds / dt;
+  s.translation = ToEigen(SurfaceCentroid(source)) - s.scale * (turn * ToEigen(SurfaceCentroid(target)));
   return s;
 }
 

@@ -70,9 +70,12 @@ Eigen::Matrix3d PrincipalAxes(const Mesh &mesh);
 // identity and those already listed (for meshes whose axes are the coordinate axes, all).
 std::vector<Eigen::Matrix3d> CandidateTurns(const Mesh &source, const Mesh &target);
 
-// The placement p with the target turned by r about the point c (its centroid) first:
-// x -> p(r (x - c) + c).
-Similarity Turned(const Similarity &p, const Eigen::Matrix3d &r, const Point3 &c);
+// The centre-and-scale placement with the target turned by `turn` about its centroid first:
+// its centroid onto the source's, and the diagonal of its bounding box scaled to the
+// source's; for a turn, the boxes along each mesh's own principal axes (PrincipalAxes),
+// since an axis-aligned box's diagonal changes as the mesh turns, so that a turned pair is
+// placed as the same pair upright.
+Similarity CentreAndScale(const Mesh &source, const Mesh &target, const Eigen::Matrix3d &turn = Eigen::Matrix3d::Identity());
 
 // "turned 90 degrees about the x axis", "turned 120 degrees about (1, -1, 1)", "turned 47
 // degrees about (0.41, -0.20, 0.89)".

@@ -184,14 +184,24 @@ TEST(Placement, TheQuarterTurnsAreTheCubesOtherRotationsSmallestFirst) {
   EXPECT_EQ(half, 9);
 }
 
-TEST(Placement, TurnedTurnsTheTargetAboutItsCentroidFirst) {
-  const Similarity p = KnownSimilarity();
-  const Point3 c(0.4, 2, -1);
-  const Eigen::Matrix3d r = QuarterTurns()[0];
-  const Similarity t = Turned(p, r, c);
-  EXPECT_LT(vcg::Distance(t.Apply(c), p.Apply(c)), 1e-12);  // the centroid stays where p puts it
-  for (const Point3 &v : {Point3(1, 0, 0), Point3(0.3, -2, 0.7)})
-    EXPECT_LT(vcg::Distance(t.Apply(c + v), p.Apply(c + ToPoint(r * ToEigen(v)))), 1e-12);
+TEST(Placement, CentreAndScaleTurnedMatchesTheTurnedTargetsBox) {
+  // A box 2 x 1 x 0.4, and the same box tilted (its axis-aligned box then has a longer
+  // diagonal): turned back, it is placed exactly as the upright one, the same scale too.
+  Mesh source, upright, tilted;
+  testing::MakeBox(source, Box3(Point3(1, 2, 3), Point3(4, 4, 4)));
+  testing::MakeBox(upright, Box3(Point3(-1, -0.5, -0.2), Point3(1, 0.5, 0.2)));
+  testing::MakeBox(tilted, Box3(Point3(-1, -0.5, -0.2), Point3(1, 0.5, 0.2)));
+  Similarity tilt;
+  tilt.rotation = (Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  tilt.translation = Eigen::Vector3d(0.3, -1, 2);
+  Transform(tilted, tilt);
+  const Similarity straight = CentreAndScale(source, upright);
+  const Similarity back = CentreAndScale(source, tilted, tilt.rotation.transpose());
+  EXPECT_LT(FitPlacement(source, tilted, {}, {}, Align::CentreAndScale).scale, 0.9 * straight.scale);  // as it is: smaller
+  EXPECT_NEAR(back.scale, straight.scale, 1e-9);
+  for (const Point3 &corner : {Point3(-1, -0.5, -0.2), Point3(1, 0.5, 0.2), Point3(1, -0.5, 0.2)})
+    EXPECT_POINT_NEAR(back.Apply(tilt.Apply(corner)), straight.Apply(corner), 1e-9);
 }
 
 TEST(Placement, DescribeTurnNamesTheAngleAndTheAxis) {
