@@ -203,21 +203,29 @@ const std::vector<Shape> &Shapes() {
   return shapes;
 }
 
-void MakeShape(const std::string &name, Mesh &m, int cells) {
+Eigen::Matrix3d ShapeTurn(const std::string &name, std::string *base) {
   // NAME_turned: a quarter turn about x, (x, y, z) -> (x, -z, y); NAME_tilted: 40 degrees about
-  // x, then 25 about y. The shape's function is read at R^T p, its box turned with it.
-  Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
-  std::string base = name;
+  // x, then 25 about y.
+  std::string rest = name;
   auto ends = [&](const std::string &suffix) {
-    if (base.size() <= suffix.size() || base.compare(base.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
-    base.resize(base.size() - suffix.size());
+    if (rest.size() <= suffix.size() || rest.compare(rest.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+    rest.resize(rest.size() - suffix.size());
     return true;
   };
+  Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
   if (ends("_turned"))
     turn = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   else if (ends("_tilted"))
     turn = (Eigen::AngleAxisd(25 * M_PI / 180, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(40 * M_PI / 180, Eigen::Vector3d::UnitX()))
                .toRotationMatrix();
+  if (base) *base = rest;
+  return turn;
+}
+
+void MakeShape(const std::string &name, Mesh &m, int cells) {
+  // The shape's function is read at R^T p, its box turned with it.
+  std::string base;
+  const Eigen::Matrix3d turn = ShapeTurn(name, &base);
   for (const Made &made : Catalogue()) {
     if (made.shape.name != base) continue;
     const Sdf sdf = made.sdf;

@@ -24,6 +24,7 @@
 #include "core/mesh.h"
 #include "core/pipeline.h"
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ const std::vector<Shape> &Shapes();
 // in:  a name of Shapes(), the marching cubes' cells along the longest side
 // out: m (throws std::invalid_argument for an unknown name)
 void MakeShape(const std::string &name, Mesh &m, int cells = 128);
+
+// The turn a name's suffix gives its shape (about the origin, which each shape is made
+// around): _turned, _tilted as above, the identity for none; and the name less its suffix.
+Eigen::Matrix3d ShapeTurn(const std::string &name, std::string *base = nullptr);
 
 // A map between two shapes, in the figures the family tests assert and print.
 struct FamilyFigures {
