@@ -617,8 +617,8 @@ struct Turn {
 };
 
 // The turn of the target about its centroid (placement.h, CandidateTurns: the cube's quarter
-// turns, then those laying its principal axes on the source's), placed by centre-and-scale
-// as turned (placement.h, CentreAndScale), under which the linear blend makes the fewest cuts and births (then the
+// turns, then those laying its principal axes on the source's; each placed by CentreAndScale
+// with the turn) under which the linear blend makes the fewest cuts and births (then the
 // insides overlap most; then the one listed first), if that is fewer than the target as it
 // is makes. Why: a handle is carried by the morph only where the two meshes' handles
 // overlap; a torus mapped onto the same torus standing up (ring1 -> ring1 turned a quarter

@@ -26,12 +26,13 @@ Eigen::Matrix3Xd Columns(const std::vector<Point3> &pts) {
   return m;
 }
 
-// Axis-aligned box of the live vertices (independent of whether m.bbox is up to date).
-Box3 VertexBox(const Mesh &m) {
-  Box3 b;
-  for (const auto &v : m.vert)
-    if (!v.IsD()) b.Add(v.cP());
-  return b;
+// The diagonal of the box of the live vertices along the given axes (columns; the identity:
+// the axis-aligned box, whether or not m.bbox is up to date).
+double Diagonal(const Mesh &mesh, const Eigen::Matrix3d &axes) {
+  Box3 box;
+  for (const auto &v : mesh.vert)
+    if (!v.IsD()) box.Add(ToPoint(axes.transpose() * ToEigen(v.cP())));
+  return box.IsNull() ? 0 : box.Diag();
 }
 
 // Principal direction of the centred columns of `x` (3 x n) and its singular values.
@@ -248,14 +249,6 @@ std::vector<Eigen::Matrix3d> CandidateTurns(const Mesh &source, const Mesh &targ
   for (const Eigen::Matrix3d &r : aligned)
     if (!listed(r)) turns.push_back(r);
   return turns;
-}
-
-// The diagonal of the mesh's box along the given axes (columns), about the origin.
-double Diagonal(const Mesh &mesh, const Eigen::Matrix3d &axes) {
-  Box3 box;
-  for (const auto &v : mesh.vert)
-    if (!v.IsD()) box.Add(ToPoint(axes.transpose() * ToEigen(v.cP())));
-  return box.IsNull() ? 0 : box.Diag();
 }
 
 Similarity CentreAndScale(const Mesh &source, const Mesh &target, const Eigen::Matrix3d &turn) {
