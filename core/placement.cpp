@@ -219,6 +219,19 @@ std::vector<Eigen::Matrix3d> QuarterTurns() {
   return turns;
 }
 
+std::vector<Eigen::Matrix3d> AxisPermutations() {
+  std::vector<Eigen::Matrix3d> out;
+  for (const Eigen::Matrix3d &r : SignedPermutations()) {
+    auto same = std::find_if(out.begin(), out.end(), [&](const Eigen::Matrix3d &o) { return o.cwiseAbs() == r.cwiseAbs(); });
+    if (same == out.end())
+      out.push_back(r);
+    else if (Angle(r) < Angle(*same) - 1e-9)
+      *same = r;
+  }
+  ByAngle(out);
+  return out;
+}
+
 Eigen::Matrix3d PrincipalAxes(const Mesh &mesh) {
   // Per face, the second moment of a uniform triangle about the centroid c:
   // area / 12 (sum_i v_i v_i^T + s s^T), v_i its corners less c, s = v_0 + v_1 + v_2.

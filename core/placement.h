@@ -59,11 +59,16 @@ void Transform(Mesh &m, const Similarity &s);
 // smallest angle first.
 std::vector<Eigen::Matrix3d> QuarterTurns();
 
+// The 6 orders of the axes, each as the smallest proper rotation that lays them so (the
+// identity first, then 90 degrees about each axis and 120 about the cube's diagonal either
+// way): a hole's axis along x, y or z laid on any of them.
+std::vector<Eigen::Matrix3d> AxisPermutations();
+
 // The principal axes of the mesh's surface: the eigenvectors of its area-weighted second
 // moment about its centroid, as columns, the smallest moment first, a proper rotation.
 Eigen::Matrix3d PrincipalAxes(const Mesh &mesh);
 
-// The turns of the target tried where it does not map as it is (pipeline.cpp, BestTurn):
+// The turns of the target tried where it does not map as it is (pipeline.cpp, BestPlacement):
 // QuarterTurns, then, for meshes turned by other angles, the 24 rotations taking the
 // target's principal axes onto the source's (each axis onto any, either way: the axes'
 // order and signs say little about which parts match), the smallest angle first, less the

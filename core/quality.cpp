@@ -106,6 +106,19 @@ double LongestEdge(const Mesh &m) {
   return longest;
 }
 
+double LongestStretchedEdge(const Mesh &cut, const Mesh &mapped, double scale, Point3 *midpoint) {
+  double longest = 0;
+  for (std::size_t f = 0; f < mapped.face.size(); ++f)
+    if (!mapped.face[f].IsD())
+      for (int e = 0; e < 3; ++e) {
+        const Point3 &a = mapped.face[f].cP(e), &b = mapped.face[f].cP((e + 1) % 3);
+        const double length = vcg::Distance(a, b);
+        const double source = vcg::Distance(cut.face[f].cP(e), cut.face[f].cP((e + 1) % 3)) / scale;
+        if (length > longest && length > kStretchFactor * source) longest = length, *midpoint = (a + b) / 2;
+      }
+  return longest;
+}
+
 double MeanEdgeLength(const Mesh &m) {
   double sum = 0;
   long edges = 0;

@@ -28,6 +28,14 @@ double FlippedAreaShare(Mesh &mapped, const ClosestPoint &target);
 double LongestEdge(const Mesh &m);
 double MeanEdgeLength(const Mesh &m);
 
+// The longest edge of `mapped` that the map stretches: mapped more than kStretchFactor times
+// its length on `cut` (the same faces on the source) over `scale` (the placement's, source
+// units per target unit). An edge as long on the source is the source's own coarseness,
+// not the map's (a 1280-face ellipsoid onto itself at 1.2 times: edges over its bump of 7.5%
+// of the diagonal). Its midpoint on `mapped` into `midpoint`; 0 if there is none.
+constexpr double kStretchFactor = 2;
+double LongestStretchedEdge(const Mesh &cut, const Mesh &mapped, double scale, Point3 *midpoint);
+
 // Per-vertex area distortion |log2(A_mapped / A_source)|, A the area of the faces around
 // the vertex and the ratio normalised by the total areas, written to the vertices'
 // quality of `cut` (which shares faces and vertex order with `mapped`); returns the mean.

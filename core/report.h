@@ -64,6 +64,8 @@ struct MapQuality {
   double flippedBeforeUntangling = 0;  // the same, of the map as tracked (before untangle.h)
   double longestEdgeCells = 0;  // longest mapped edge, in grid cells
   double longestEdgeShare = 0;  // the same, over the target's bounding-box diagonal
+  double stretchedEdgeShare = 0;  // the same of the edges the map stretches (quality.h, LongestStretchedEdge)
+  Point3 stretchedEdgeAt{0, 0, 0};  // that edge's midpoint, on the target (its own frame)
   double anchorErrorCells = 0;  // largest |F(a_i) - b_i|, in grid cells (0 without anchors)
   std::vector<AnchorFigure> anchorFigures;  // per anchor pair, in order
   // The largest error over the anchors the grid resolves (AnchorFigure::Resolved); 0 if none.

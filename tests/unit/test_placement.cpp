@@ -1,7 +1,7 @@
 // Unit tests of placement.h: the similarity and its inverse, the fit to 1, 2, collinear and
 // 3 or more anchors (Umeyama), centre-and-scale (centroids and diagonals agree), the mirror
 // test of the anchors, Transform, and the turns of the target (QuarterTurns, PrincipalAxes,
-// CandidateTurns, Turned, DescribeTurn).
+// AxisPermutations, CandidateTurns, CentreAndScale, DescribeTurn).
 #include "core/eigen_point.h"
 #include "core/placement.h"
 #include "tests/support/meshes.h"
@@ -182,6 +182,27 @@ TEST(Placement, TheQuarterTurnsAreTheCubesOtherRotationsSmallestFirst) {
   EXPECT_EQ(quarter, 6);
   EXPECT_EQ(third, 8);
   EXPECT_EQ(half, 9);
+}
+
+TEST(Placement, TheAxisPermutationsLayTheZAxisOnEachAxisAndEachOrderOnce) {
+  const std::vector<Eigen::Matrix3d> orders = AxisPermutations();
+  ASSERT_EQ(orders.size(), 6u);
+  EXPECT_TRUE(orders[0].isIdentity());
+  int onAxis[3] = {0, 0, 0};
+  for (std::size_t n = 0; n < orders.size(); ++n) {
+    const Eigen::Matrix3d &r = orders[n];
+    EXPECT_NEAR(r.determinant(), 1, 1e-12);
+    EXPECT_TRUE((r.array().abs() == 1).count() == 3);
+    for (std::size_t m = 0; m < n; ++m) EXPECT_FALSE(r.cwiseAbs() == orders[m].cwiseAbs());
+    const double angle = Eigen::AngleAxisd(r).angle();
+    EXPECT_TRUE(angle < 1e-9 || std::abs(angle - M_PI / 2) < 1e-9 || std::abs(angle - 2 * M_PI / 3) < 1e-9) << angle;
+    Eigen::Index axis;
+    (r * Eigen::Vector3d::UnitZ()).cwiseAbs().maxCoeff(&axis);
+    ++onAxis[axis];
+  }
+  EXPECT_EQ(onAxis[0], 2);  // a hole's axis along z laid along x, y and z, twice each
+  EXPECT_EQ(onAxis[1], 2);
+  EXPECT_EQ(onAxis[2], 2);
 }
 
 TEST(Placement, CentreAndScaleTurnedMatchesTheTurnedTargetsBox) {

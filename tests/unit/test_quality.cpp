@@ -85,6 +85,26 @@ TEST(Quality, LongestEdgeOfABoxIsAFaceDiagonal) {
   EXPECT_NEAR(LongestEdge(box), std::hypot(2.0, 3.0), 1e-12);
 }
 
+// A box mapped onto itself 3 times as large with the placement's scale 1/3 stretches
+// nothing; one corner pulled out stretches the edges at it, and only those count.
+TEST(Quality, OnlyEdgesMappedLongerThanTwiceTheirSourceLengthAreStretched) {
+  Mesh cut, mapped;
+  MakeBox(cut, Box3(Point3(0, 0, 0), Point3(1, 2, 3)));
+  MakeBox(mapped, Box3(Point3(0, 0, 0), Point3(3, 6, 9)));
+  Point3 at(-1, -1, -1);
+  EXPECT_EQ(LongestStretchedEdge(cut, mapped, 1.0 / 3, &at), 0);  // as long as on the source, scaled
+  EXPECT_GT(LongestStretchedEdge(cut, mapped, 1, &at), 0);      // 3 times as long, unscaled
+  Vertex *corner = &mapped.vert[0];
+  const Point3 was = corner->cP();
+  corner->P() = was * 4 - Point3(1, 1, 1) * 20;  // far out
+  const double stretched = LongestStretchedEdge(cut, mapped, 1.0 / 3, &at);
+  EXPECT_NEAR(stretched, LongestEdge(mapped), 1e-12);
+  bool atCorner = false;  // the midpoint reported is that of an edge from the corner
+  for (const Vertex &v : mapped.vert)
+    atCorner |= vcg::Distance((v.cP() + corner->cP()) / 2, at) < 1e-12;
+  EXPECT_TRUE(atCorner);
+}
+
 TEST(Quality, DistortionOfAUniformlyScaledCopyIsZero) {
   Mesh cut, mapped;
   MakeSphere(cut, Point3(0, 0, 0), 1, 3);

@@ -152,7 +152,7 @@ std::vector<Point3> RimImages(Mesh &cut) {
 // A torus onto the same torus standing up (turned a quarter about x, as a file made with
 // another axis up comes). As placed, the morph closes the lying torus's hole and opens the
 // standing one's: 2 cuts and 4 loops where a continuous map needs none. The pipeline turns
-// the target back (pipeline.cpp, BestTurn: the linear blend's cuts and births ranked over the
+// the target back (pipeline.cpp, BestPlacement: the linear blend's cuts and births ranked over the
 // candidate turns of placement.h) and maps it with no cut, and the log says so.
 TEST(TopologyChange, ATorusStandingUpIsMappedWithTheTargetTurnedBack) {
   Mesh source, target;
