@@ -702,7 +702,7 @@ OtherPlacement BestPlacement(Meshes &m, const Options &options, const Stage &sta
         s.translation = l + k * r * (start.translation - g);
         rank(s, "moved so that the hole it gains at (" + Short(g.x()) + ", " + Short(g.y()) + ", " + Short(g.z()) +
                     ") lies on the handle the source loses at (" + Short(l.x()) + ", " + Short(l.y()) + ", " +
-                    Short(l.z()) + "), " + (r.isIdentity() ? "" : DescribeTurn(r) + ", ") + "scaled " + Short(k) +
+                    Short(l.z()) + ") (the source's frame), " + (r.isIdentity() ? "" : DescribeTurn(r) + ", ") + "scaled " + Short(k) +
                     " times");
       }
   if (best.better)
