@@ -137,10 +137,11 @@ TEST(Tilted, AChairIsMappedOntoItselfTiltedWithTheTiltUndone) {
 // handle (1/4/-2 where 1/0/0 is needed, at 48, 64 and 96 cells). The target is moved so that
 // the hole it gains lies on the handle the source loses, its axes laid each way and scaled
 // (pipeline.cpp, BestPlacement): then the morph has no event and nothing is cut. The map
-// keeps the source's faces (nothing is cut, so none is split), and the doughnut placed at half
-// the mug's size makes them twice as long on it: mug -> ring1's longest edge is 5.4-5.7% of the
-// diagonal at 48 to 96 cells, no longer than its source edge; what is asserted is that no
-// edge is stretched (quality.h, LongestStretchedEdge) beyond 5%.
+// keeps the source's faces (nothing is cut, so none is split), and with the doughnut placed at
+// half size each source edge is twice as long in the doughnut's units: mug -> ring1's longest
+// edge is 5.4-5.7% of the diagonal at 48 to 96 cells, mapped 1.55 times its source length
+// there (64 cells); what is asserted is that no edge is stretched (mapped more than twice
+// its source length: quality.h, LongestStretchedEdge) beyond 5%.
 TEST(Moved, TheMugAndTheDoughnutMapWithoutACutEitherWay) {
   for (const Pair pair : {Pair{"mug", "ring1"}, Pair{"ring1", "mug"}}) {
     Mesh source, target;
