@@ -404,17 +404,19 @@ bool Better(const Report &a, const Report &b) {
 double WrongArea(const Report &r) { return 1 - r.quality.coverage + r.quality.flippedAreaShare; }
 
 // One map's figures for the log: "linear blend: cut 1/0/2 (needs 1/8/-6), coverage 94.1%, flipped 0.76%,
-// longest edge 3.1%" (of the target's diagonal).
+// longest edge 5.5% (stretched 0.0%)" (of the target's diagonal; stretched: the figure Failures
+// counts, quality.h's LongestStretchedEdge).
 std::string Summary(const Report &r) {
-  char text[200];
-  std::snprintf(text, sizeof text, "%s: cut %d/%d/%d%s, coverage %.1f%%, flipped %.2f%%, longest edge %.1f%%",
+  char text[240];
+  std::snprintf(text, sizeof text, "%s: cut %d/%d/%d%s, coverage %.1f%%, flipped %.2f%%, longest edge %.1f%% (stretched %.1f%%)",
                 r.morphMode.substr(0, r.morphMode.find(" (")).c_str(), r.cutComponents, r.cutBoundaryLoops,
                 r.cutEulerCharacteristic,
                 r.cutPredicted ? (" (needs " + std::to_string(r.neededComponents) + "/" +
                                   std::to_string(r.neededBoundaryLoops) + "/" +
                                   std::to_string(r.neededEulerCharacteristic) + ")").c_str()
                                : "",
-                100 * r.quality.coverage, 100 * r.quality.flippedAreaShare, 100 * r.quality.longestEdgeShare);
+                100 * r.quality.coverage, 100 * r.quality.flippedAreaShare, 100 * r.quality.longestEdgeShare,
+                100 * r.quality.stretchedEdgeShare);
   return text;
 }
 

@@ -68,6 +68,8 @@ const std::vector<Figure> &FigureTable() {
       {"longest_edge_cells", U::Cells, L::Quality, "longest mapped edge", false, [](const Report &r) { return r.quality.longestEdgeCells; }},
       {"longest_edge_share", U::Share, L::None, "longest mapped edge over the target diagonal", false,
        [](const Report &r) { return r.quality.longestEdgeShare; }},
+      {"stretched_edge_share", U::Share, L::None, "longest stretched edge over the target diagonal", false,
+       [](const Report &r) { return r.quality.stretchedEdgeShare; }},
       {"anchor_error_cells", U::Cells, L::Quality, "anchor error", true, [](const Report &r) { return r.quality.anchorErrorCells; }},
       {"anchor_error_resolved_cells", U::Cells, L::None, "anchor error, resolved anchors", true,
        [](const Report &r) { return r.quality.ResolvedAnchorErrorCells(); }},

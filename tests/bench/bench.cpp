@@ -107,6 +107,11 @@ const char *StringFlag(int argc, char **argv, const char *name) {
   return nullptr;
 }
 
+// Whether argv holds the argument `name`.
+bool HasFlag(int argc, char **argv, const char *name) {
+  return std::any_of(argv, argv + argc, [&](const char *a) { return !std::strcmp(a, name); });
+}
+
 // Each source vertex's image and whether surgery kept it (correspondence.h), a line each,
 // for the correspondence benchmark (tests/bench/topkids.py).
 void WriteImages(const Mesh &source, Result &result, const char *path) {
@@ -323,7 +328,15 @@ int main(int argc, char **argv) {
       MakeShape(argv[2], source, 64);
       MakeShape(argv[3], target, 64);
       const auto start = std::chrono::steady_clock::now();
-      ComputeMap(source, target, anchors, options, result);
+      // --stages: each stage's name on stderr as it starts, with the seconds since the start.
+      const bool stages = HasFlag(argc, argv, "--stages");
+      std::string last;
+      ComputeMap(source, target, anchors, options, result, [&](double, const std::string &stage) {
+        if (stages && stage != last)
+          std::fprintf(stderr, "%8.2f s  %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                       (last = stage).c_str());
+        return true;
+      });
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::printf("%s%s", result.report.ToText().c_str(),
                   Figures(argv[2], argv[3], options.gridResolution, target, result, seconds).line.c_str());
