@@ -340,9 +340,10 @@ int main(int argc, char **argv) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::printf("%s%s", result.report.ToText().c_str(),
                   Figures(argv[2], argv[3], options.gridResolution, target, result, seconds).line.c_str());
-      if (const char *dir = StringFlag(argc, argv, "--save")) {  // DIR/cut.ply, DIR/mapped.ply
+      if (const char *dir = StringFlag(argc, argv, "--save")) {  // DIR/cut.ply, DIR/mapped.ply, DIR/target.ply
         WritePly(result.cut, std::string(dir) + "/cut.ply");
         WritePly(result.mapped, std::string(dir) + "/mapped.ply");
+        WritePly(target, std::string(dir) + "/target.ply");
       }
     } else if (mode == "map") {
       LoadMesh(argv[2], source);
