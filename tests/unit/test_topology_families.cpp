@@ -9,8 +9,7 @@
 //   - coverage of the target >= 97%, flipped area <= 1% after untangling (and its figure
 //     before untangling is reported), longest mapped edge <= 5% of the target's diagonal.
 // Each case prints one `family |` line with its figures (the closing note's table). Every
-// pair of kPairs runs at every grid (76 cases: 2 min 10 s at 48 and 64 cells, 5 min 32 s at 96
-// and 128 on 2 cores, one case at a time), kFurtherPairs at 64, kTurnedPairs at 48 and 64,
+// pair of kPairs runs at every grid (76 cases; the README gives the suite's time), kFurtherPairs at 64, kTurnedPairs at 48 and 64,
 // kTiltedPairs at 64; a chair mapped onto itself tilted, its images checked against the
 // tilt it was made with; and the coffee mug and the doughnut, placed by their handles.
 #include "core/topology.h"
