@@ -46,7 +46,8 @@ bool FarFromBox(const Point3 &p, double r, const Point3 &a, const Point3 &b, con
 
 // The gap a step closes at an event: the nodes it sweeps into the inside set (f(., t_k) >= 0
 // and f(., t_k+1) < 0) between two fronts, joined through 6-neighbours to the event's node x
-// (swept itself where sheets meet at the event's own step; else none). A node lies between
+// (swept itself where sheets or a hole's walls meet at the event's own step; else none, as
+// where a neck pinches). A node lies between
 // two fronts where, along one of the axes, the run of swept nodes through it ends at a node
 // already inside at t_k on both sides. Where two sheets meet at a point (spheres merging) it
 // is a few nodes around x; where flat fronts meet across a whole section (the rails of chair
@@ -89,15 +90,21 @@ class Swept {
           stack.push_back(g.Index(i + d[0], j + d[1], k + d[2]));
     }
   }
-  // Whether a corner of the cell holding p was swept.
-  bool Touches(const Point3 &p) const {
+  // Whether a corner of the cell holding p was swept, on the outside of the surface p lay on
+  // at t_k (outward normal: grad f(., t_k) at p). A wall faces the gap it closes; a sheet
+  // thinner than a cell has its other side in the same cells, facing away (thin_ring ->
+  // sphere at 64 cells: the ring's hole fills, and without the side the band took 59 faces
+  // of the tube's far side too, leaving an edge of 57.5% of the target's diagonal).
+  bool Touches(const Point3 &p, const ScalarField &fCur) const {
     if (nodes_.empty()) return false;
-    const Point3 c = grid_.ToGrid(p);
+    const Point3 c = grid_.ToGrid(p), outward = fCur.Gradient(p);
     const int i = int(std::floor(c.X())), j = int(std::floor(c.Y())), k = int(std::floor(c.Z()));
     for (int dz = 0; dz < 2; ++dz)
       for (int dy = 0; dy < 2; ++dy)
         for (int dx = 0; dx < 2; ++dx)
-          if (Inside(i + dx, j + dy, k + dz) && nodes_.count(grid_.Index(i + dx, j + dy, k + dz))) return true;
+          if (Inside(i + dx, j + dy, k + dz) && nodes_.count(grid_.Index(i + dx, j + dy, k + dz)) &&
+              (grid_.Node(i + dx, j + dy, k + dz) - p) * outward >= 0)
+            return true;
     return false;
   }
 
@@ -251,11 +258,13 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
       } else {
         const std::vector<int> crossing = faces;
         for (int n : InSphere(event.position, position)) faces.push_back(n);
-        // (c) where sheets meet at the event's own step, each disc grows over the faces
-        // that lie where the step swept the gap between them (Swept).
-        if (shape == CutShape::Discs && outcome.stepsLate == 0) {
+        // (c) where the step closes a gap at x, at the event's own step, the cut grows over
+        // the faces that lie where the step swept it (Swept): sheets meeting (discs), or the
+        // walls of a hole that closes (a handle lost as a band). A neck that pinches sweeps
+        // nothing in at x, and its band stays as (a) and (b) make it.
+        if (outcome.stepsLate == 0) {
           const Swept swept(event.node, fCur, fNext);
-          const std::vector<int> grown = Spread(faces, [&](const Point3 &p) { return swept.Touches(p); }, position);
+          const std::vector<int> grown = Spread(faces, [&](const Point3 &p) { return swept.Touches(p, fCur); }, position);
           faces.insert(faces.end(), grown.begin(), grown.end());
         }
         // Only what is joined to (b) through the cut's own faces, corner to corner: a piece of

@@ -11,7 +11,7 @@
 //   eulermap_bench vertices S                               sphere of S subdivisions -> ellipsoid, 64 cells
 //   eulermap_bench soup S                                   sphere of S subdivisions -> torus, 64 cells, welded
 //                                                           and as a triangle soup (every face its own vertices)
-//   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N] [--images FILE]
+//   eulermap_bench map SOURCE TARGET [SOURCE.pp TARGET.pp] [--grid N] [--steps N] [--images FILE] [--save DIR]
 //                                                           FILE: a line per source vertex, its image on the
 //                                                           target "x y z 1", or "x y z 0" where surgery removed
 //                                                           it (the image of the nearest kept vertex)
@@ -211,7 +211,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s row N | grid CELLS | shapes SOURCE TARGET [--save DIR] | map SOURCE TARGET [SOURCE.pp TARGET.pp] [options] | header | "
+    std::fprintf(stderr, "usage: %s row N | grid CELLS | shapes SOURCE TARGET [--save DIR] | map SOURCE TARGET [SOURCE.pp TARGET.pp] [--save DIR] [options] | header | "
                          "mlx [NAME=VALUE ...] | parameters\n", argv[0]);
     return 2;
   }
@@ -340,11 +340,6 @@ int main(int argc, char **argv) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::printf("%s%s", result.report.ToText().c_str(),
                   Figures(argv[2], argv[3], options.gridResolution, target, result, seconds).line.c_str());
-      if (const char *dir = StringFlag(argc, argv, "--save")) {  // DIR/cut.ply, DIR/mapped.ply, DIR/target.ply
-        WritePly(result.cut, std::string(dir) + "/cut.ply");
-        WritePly(result.mapped, std::string(dir) + "/mapped.ply");
-        WritePly(target, std::string(dir) + "/target.ply");
-      }
     } else if (mode == "map") {
       LoadMesh(argv[2], source);
       LoadMesh(argv[3], target);
@@ -355,6 +350,11 @@ int main(int argc, char **argv) {
     } else {
       std::fprintf(stderr, "unknown mode %s\n", mode.c_str());
       return 2;
+    }
+    if (const char *dir = StringFlag(argc, argv, "--save")) {  // DIR/cut.ply, DIR/mapped.ply, DIR/target.ply
+      WritePly(result.cut, std::string(dir) + "/cut.ply");
+      WritePly(result.mapped, std::string(dir) + "/mapped.ply");
+      WritePly(target, std::string(dir) + "/target.ply");
     }
   } catch (const std::exception &e) {
     std::fprintf(stderr, "error: %s\n", e.what());

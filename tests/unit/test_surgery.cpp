@@ -1,6 +1,6 @@
 // Surgery (surgery.h) on small hand-made cases: a sphere tracked in place under an event of
-// each kind, a torus whose neck pinches, and stretched edges split only where their ends
-// keep to f = 0.
+// each kind, a torus whose neck pinches, fronts and hole walls meeting within a step, and
+// stretched edges split only where their ends keep to f = 0.
 #include "core/surgery.h"
 #include "core/topology.h"
 #include "tests/support/fields.h"
@@ -219,6 +219,48 @@ TEST(Surgery, AFrontMovingOnAloneIsNoGapBetweenSheets) {
   EXPECT_GT(after, 0.9 * before);  // 2.96 of 3.13 kept (1.69 with every swept node joined to x)
   for (const Vertex &v : cut.vert)  // what goes lies within the section's reach of the gap
     if (!v.IsD()) EXPECT_TRUE(std::abs(v.cP().X()) > 0.06 || std::max(std::abs(v.cP().Y()), std::abs(v.cP().Z())) > 0.15);
+}
+
+// A hole whose walls meet within one step (rocker-arm -> cow at 64 cells, inflated: the
+// bore through the rocker fills at step 6): a block with a square bore, the bore filled by
+// the step. The handle lost is cut as a band, and the band grows over the bore's whole wall,
+// which lies where the step swept the gap; with the same field before and after (nothing
+// swept) only the band of the hole radius goes. Left, the wall was tracked into the filled
+// bore, and the pull-back laid it as a flattened tube along a crease of the cow's back, half
+// of it facing the wrong way: 2.52% of the map flipped after untangling, 0.50% with it cut.
+TEST(Surgery, AHoleClosedWithinAStepLosesItsWholeWall) {
+  const Grid g = Grid::Enclosing(Box3(Point3(-1, -1, -1), Point3(1, 1, 1)), 40);  // cells of 0.05
+  const Box3 block(Point3(-0.3, -0.5, -0.5), Point3(0.3, 0.5, 0.5)), bore(Point3(-2, -0.2, -0.2), Point3(2, 0.2, 0.2));
+  auto holed = [&](const Point3 &p) { return std::max(BoxSignedDistance(block, p), -BoxSignedDistance(bore, p)); };
+  Mesh source;
+  MakeImplicit(source, holed, Box3(Point3(-0.4, -0.6, -0.6), Point3(0.4, 0.6, 0.6)), 60);
+  const ScalarField open = Sampled(g, holed), filled = Sampled(g, [&](const Point3 &p) { return BoxSignedDistance(block, p); });
+  const Point3 centre = g.ToGrid(Point3(0, 0, 0));
+  const vcg::Point3i node(int(std::lround(centre.X())), int(std::lround(centre.Y())), int(std::lround(centre.Z())));
+  const TopologyEvent lost = EventAt(g, node, TopologyEventKind::HandleLost);
+  const std::vector<Saddle> saddles = {{lost.position, 1, Point3(1, 0, 0)}};  // the band round the bore, normal to its axis
+  std::vector<Point3> points;
+  for (const Vertex &v : source.vert) points.push_back(v.cP());
+  auto onWall = [](const Point3 &p) { return std::max(std::abs(p.Y()), std::abs(p.Z())) < 0.21; };
+  double wall[2];
+  for (int swept = 0; swept < 2; ++swept) {
+    Tracker tracker(points, std::vector<double>(points.size(), 0.0));
+    Surgery surgery(source, g.h, g.h, {lost}, {EventCut::Planned}, false);
+    surgery.Step(0, saddles, swept ? open : filled, filled, tracker);
+    ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
+    Mesh cut;
+    std::vector<EventSurgery> outcomes;
+    surgery.Build(source, tracker.Points(), cut, outcomes);
+    const Topology t = MeasureTopology(cut);  // the block less a band: an annulus either way
+    EXPECT_EQ(t.components, 1);
+    EXPECT_EQ(t.boundaryLoops, 2);
+    EXPECT_EQ(t.eulerCharacteristic, 0);
+    wall[swept] = 0;
+    for (const Face &f : cut.face)
+      if (!f.IsD() && onWall(vcg::Barycenter(f))) wall[swept] += vcg::DoubleArea(f) / 2;
+  }
+  EXPECT_GT(wall[0], 0.6);   // the bore's wall (4 x 0.4 x 0.6 = 0.96) less a band: most of it stays
+  EXPECT_LT(wall[1], 0.05);  // swept: none of it stays
 }
 
 // Stretched edges are split only where both ends still follow f = 0: a tracked point left
