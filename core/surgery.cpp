@@ -90,20 +90,23 @@ class Swept {
           stack.push_back(g.Index(i + d[0], j + d[1], k + d[2]));
     }
   }
-  // Whether a corner of the cell holding p was swept, on the outside of the surface p lay on
-  // at t_k (outward normal: grad f(., t_k) at p). A wall faces the gap it closes; a sheet
-  // thinner than a cell has its other side in the same cells, facing away (thin_ring ->
-  // sphere at 64 cells: the ring's hole fills, and without the side the band took 59 faces
-  // of the tube's far side too, leaving an edge of 57.5% of the target's diagonal).
-  bool Touches(const Point3 &p, const ScalarField &fCur) const {
+  // Whether a corner of the cell holding p was swept; with `outward` (the normal of the
+  // surface p lay on at t_k), only a corner on its outside. A hole's wall faces the gap it
+  // closes, and a tube thinner than a cell has its far side in the same cells, facing away
+  // (thin_ring -> sphere at 64 cells: the ring's hole fills, and the band took 59 faces of
+  // the tube's far side too, leaving an edge of 57.5% of the target's diagonal). Sheets
+  // meeting take every swept corner: the flat fronts of chair -> chair_rails, tracked a cell
+  // or two behind the level set, face the gap from outside it (with the side, the membrane
+  // stayed: 96 and 128 cells, edges of 6.1% and 6.0% of the diagonal).
+  bool Touches(const Point3 &p, const Point3 *outward = nullptr) const {
     if (nodes_.empty()) return false;
-    const Point3 c = grid_.ToGrid(p), outward = fCur.Gradient(p);
+    const Point3 c = grid_.ToGrid(p);
     const int i = int(std::floor(c.X())), j = int(std::floor(c.Y())), k = int(std::floor(c.Z()));
     for (int dz = 0; dz < 2; ++dz)
       for (int dy = 0; dy < 2; ++dy)
         for (int dx = 0; dx < 2; ++dx)
           if (Inside(i + dx, j + dy, k + dz) && nodes_.count(grid_.Index(i + dx, j + dy, k + dz)) &&
-              (grid_.Node(i + dx, j + dy, k + dz) - p) * outward >= 0)
+              (!outward || (grid_.Node(i + dx, j + dy, k + dz) - p) * *outward >= 0))
             return true;
     return false;
   }
@@ -260,11 +263,18 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
         for (int n : InSphere(event.position, position)) faces.push_back(n);
         // (c) where the step closes a gap at x, at the event's own step, the cut grows over
         // the faces that lie where the step swept it (Swept): sheets meeting (discs), or the
-        // walls of a hole that closes (a handle lost as a band). A neck that pinches sweeps
-        // nothing in at x, and its band stays as (a) and (b) make it.
+        // walls of a hole that closes (a handle lost as a band), those facing the gap. A neck
+        // that pinches sweeps nothing in at x, and its band stays as (a) and (b) make it.
         if (outcome.stepsLate == 0) {
           const Swept swept(event.node, fCur, fNext);
-          const std::vector<int> grown = Spread(faces, [&](const Point3 &p) { return swept.Touches(p, fCur); }, position);
+          const std::vector<int> grown = Spread(
+              faces,
+              [&](const Point3 &p) {
+                if (shape == CutShape::Discs) return swept.Touches(p);
+                const Point3 outward = fCur.Gradient(p);
+                return swept.Touches(p, &outward);
+              },
+              position);
           faces.insert(faces.end(), grown.begin(), grown.end());
         }
         // Only what is joined to (b) through the cut's own faces, corner to corner: a piece of

@@ -43,10 +43,11 @@
 //          of the hole radius leaves the rest of each front as a membrane the pull-back folds
 //          onto the walls, its faces spanning the section (mapped edges of 6.4% of the
 //          target's diagonal at 96 cells). Where a hole's walls meet (a handle lost as a bore
-//          fills, rocker-arm -> cow inflated), a band of the hole radius leaves the rest of the
-//          wall as a flattened tube along a crease of the target, half of it flipped (2.52% of
-//          the map after untangling against 0.50% with the wall cut). A neck that pinches
-//          sweeps nothing in at x: its band is (a) and (b)'s;
+//          fills, rocker-arm -> cow inflated), the band grows over the walls facing the gap:
+//          a band of the hole radius left the rest of the wall as a flattened tube along a
+//          crease of the target, half of it flipped (2.52% of the map after untangling
+//          against 0.70% with the wall cut). A neck that pinches sweeps nothing in at x: its
+//          band is (a) and (b)'s;
 //      of (a) and (c), only the faces joined to (b)'s discs or band through the cut's own
 //      faces, corner to corner: another layer of the tracked surface within the radius (a
 //      fold, a wall beside the meeting fronts) keeps its faces. A piece of it cut opened a
