@@ -16,7 +16,7 @@
 //                                                           target "x y z 1", or "x y z 0" where surgery removed
 //                                                           it (the image of the nearest kept vertex)
 //   options of every mode: --alpha A --anchor-weight B --anchor-radius R (velocity.h) --align none|centre
-//                          --no-untangle (untangle.h left out: the map as tracked)
+//                          --no-untangle (untangle.h left out: the map before untangling, stretched edges still split)
 //   eulermap_bench header                                   the header of the table `row` and `grid` print
 //   eulermap_bench mlx [NAME=VALUE ...]                     a complete meshlabserver script of the filter
 //                                                           (core/parameters.h; defaults for the rest)
@@ -162,7 +162,7 @@ Options OptionsFrom(int argc, char **argv) {
   o.gridResolution = Flag(argc, argv, "--grid", o.gridResolution);
   o.steps = Flag(argc, argv, "--steps", o.steps);
   if (const char *align = StringFlag(argc, argv, "--align")) o.align = std::strcmp(align, "none") ? Align::CentreAndScale : Align::None;
-  if (HasFlag(argc, argv, "--no-untangle")) o.untangle = false;  // the map as tracked (--save writes it so)
+  if (HasFlag(argc, argv, "--no-untangle")) o.untangle = false;  // the map before untangling (--save writes it so)
   for (int i = 0; i + 1 < argc; ++i)
     if (!std::strcmp(argv[i], "--solver")) {
       const std::string s = argv[i + 1];
