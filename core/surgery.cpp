@@ -152,8 +152,8 @@ double DistanceToTriangle(const Point3 &p, const Point3 &a, const Point3 &b, con
 } // namespace
 
 Surgery::Surgery(const Mesh &source, double radius, double cell, const std::vector<TopologyEvent> &events,
-                 const std::vector<EventCut> &plan, bool refineStretched)
-    : radius_(radius), cell_(cell), events_(events), refineStretched_(refineStretched) {
+                 const std::vector<EventCut> &plan, bool growing)
+    : radius_(radius), cell_(cell), events_(events), growing_(growing) {
   if (plan.size() != events.size()) throw std::logic_error("Surgery: one plan entry per event");
   for (std::size_t e = 0; e < events.size(); ++e) {
     EventSurgery o;
@@ -288,7 +288,7 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
     }
   }
   // 3. Clean the rims; 4. refine them as they open.
-  if (!cutting.empty()) Clean(position, cutting), refineStretched_ = true;
+  if (!cutting.empty()) Clean(position, cutting), cut_ = true;
   Refine(position, fNext, tracker);
 }
 
@@ -580,28 +580,32 @@ void Surgery::Clean(const std::vector<Point3> &position, const std::vector<std::
         changed = true;
       }
     }
-    if (!changed) {
-      // The rim is refined as the hole opens (Refine).
-      for (int n = 0; n < int(tris_.size()); ++n)
-        if (tris_[n].state == kAlive && rims[n]) tris_[n].refinable = true;
-      break;
-    }
+    if (!changed) break;
   }
 }
 
 void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tracker &tracker) {
-  if (!refineStretched_) return;  // nothing cut yet: no rim, and the source's faces stay
+  if (!SplitsStretched()) return;  // nothing cut or grown yet: the source's faces stay
   const double limit = kSplitCells * cell_;
   std::vector<Point3> born;  // tracked positions of the points added at this step
+  EdgeFaces faces(tris_.size());  // refilled every pass
+  std::vector<char> onRim;        // per point
   for (int pass = 0; pass < 4; ++pass) {
+    AliveEdges(faces);
+    onRim.assign(position.size(), 0);
+    for (const Tri &t : tris_)
+      if (t.state == kAlive)
+        for (int e = 0; e < 3; ++e)
+          if (!t.border[e] && faces.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1) onRim[t.v[e]] = onRim[t.v[(e + 1) % 3]] = 1;
     auto longEdge = [&](const Tri &t, int e) { return vcg::Distance(position[t.v[e]], position[t.v[(e + 1) % 3]]) > limit; };
-    // Torn: long, and longer than kSpreadStretch times on the source (a rim opening, a
-    // surface growing into a part of the target).
+    // Torn: long, and longer than kSpreadStretch times on the source (a surface growing into
+    // a part of the target).
     auto torn = [&](const Tri &t, int e) {
       const int a = t.v[e], b = t.v[(e + 1) % 3];
       return longEdge(t, e) && vcg::Distance(position[a], position[b]) > kSpreadStretch * vcg::Distance(sourcePosition_[a], sourcePosition_[b]);
     };
-    // Long edges of rim faces, and torn edges anywhere, get a midpoint, unless an end has
+    auto atRim = [&](const Tri &t) { return onRim[t.v[0]] || onRim[t.v[1]] || onRim[t.v[2]]; };
+    // Long edges of faces at a rim, and torn edges anywhere while growing, get a midpoint, unless an end has
     // lost its level set: the part of the surface it followed vanished without a cut (a
     // handle lost that the plan leaves uncut, a membrane gone at once), so the pull-back
     // leaves it off f = 0 and every point put between lands on the other end (ring1 ->
@@ -620,7 +624,7 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
       if (t.state == kAlive)
         for (int e = 0; e < 3; ++e) {
           const int a = t.v[e], b = t.v[(e + 1) % 3];
-          if ((t.refinable ? longEdge(t, e) : torn(t, e)) && onLevel(a) && onLevel(b) && alongSurface(a, b))
+          if (((cut_ && atRim(t) && longEdge(t, e)) || (growing_ && torn(t, e))) && onLevel(a) && onLevel(b) && alongSurface(a, b))
             midpoint[EdgeFaces::Key(a, b)] = -1;
         }
     if (midpoint.empty() || PointsAdded() + int(midpoint.size()) > kAddedPerVertex * sourceVertices_) break;  // the budget

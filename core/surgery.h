@@ -62,14 +62,20 @@
 //        - islands: a piece cut off from the rest of its component with less than 2% of
 //          that component's area (left between the sphere's passes over a sheet) goes,
 //      repeated until nothing changes; so each sheet loses one disc, a pinching neck one band;
-//   4. refine: the faces on a rim have each tracked edge longer than 2 cells split at its
-//      midpoint, and so has every edge stretched to more than twice its length on the
-//      source, once the surface has been cut (or from the start, when asked: growing into
-//      a part). A map that cuts nothing keeps the source's own faces. A hole cut by a 1-cell sphere opens to the size of the target's handle
-//      (sphere -> torus: the loop becomes the torus's inner circle, 56 cells long at 48
-//      cells), and its rim would be stretched up to 18 cells between vertices; a surface
-//      growing into a part of the target (grow_shrink.h) stretches a patch of a few faces
-//      over the whole part. The new
+//   4. refine: once the surface has been cut, the faces with a corner on a rim have each
+//      tracked edge longer than 2 cells split at its midpoint; when the morph grows the
+//      surface into parts of the target (asked from the start), so has every edge stretched
+//      to more than twice its length on the source, wherever it lies. A map that cuts
+//      nothing and grows nothing keeps the source's own faces. Only at the rim, else: a
+//      sheet stretched away from every rim after a cut is one pulled over a part that
+//      another layer of the map covers (a scan's arm, held against its side, lifted off it:
+//      TOPKIDS kid01 -> kid00 at 64 cells, where splitting every stretched edge and every
+//      child of a rim face added 27292 points, 41.6% of the mapped area flipped as tracked;
+//      625 points and 17.3% at the rim alone). A hole cut by a 1-cell sphere opens to the
+//      size of the target's handle (sphere -> torus: the loop becomes the torus's inner
+//      circle, 56 cells long at 48 cells), and its rim would be stretched up to 18 cells
+//      between vertices; a surface growing into a part of the target (grow_shrink.h)
+//      stretches a patch of a few faces over the whole part. The new
 //      point lies at the edge's midpoint on the source too; its position at step k is the
 //      midpoint of the edge's tracked ends pulled back onto f(., t_k+1) = 0 (the ends are
 //      both on the same side of the parting by then), and from there it has its own
@@ -101,10 +107,10 @@ class Surgery {
   // in: source (no deleted vertices or faces; vertex n is point n of the pipeline's Tracker),
   //     the sphere's radius and the grid cell (world units), the morph's events and the plan
   //     for each (surgery_plan.h: those left Planned are acted on at their step)
-  // refineStretched: split stretched edges from the start (step 4), not only once a cut
-  // has changed the surface (the grow-then-withdraw morph stretches it as it grows)
+  // growing: the morph grows the surface into parts of the target (grow_shrink.h,
+  // inflate_shrink.h): stretched edges are split anywhere, from the start (step 4)
   Surgery(const Mesh &source, double radius, double cell, const std::vector<TopologyEvent> &events,
-          const std::vector<EventCut> &plan, bool refineStretched);
+          const std::vector<EventCut> &plan, bool growing);
 
   // One step, once the tracked points have moved to t_k+1.
   // in:  k; the saddles of V_k (only to orient cuts; may be empty), fCur = f(., t_k) and
@@ -117,9 +123,9 @@ class Surgery {
   // Whether step k has events to act on, or waits for the tracked surface to reach one (the
   // pipeline looks for V's saddles only then).
   bool Acts(int k) const;
-  // Whether stretched edges are split (step 4): once a cut has changed the surface, or from
-  // the start when asked. A map that cuts nothing keeps the source's faces.
-  bool SplitsStretched() const { return refineStretched_; }
+  // Whether edges are split (step 4): once a cut has changed the surface, or from the start
+  // when the morph grows it. A map that cuts nothing and grows nothing keeps the source's faces.
+  bool SplitsStretched() const { return growing_ || cut_; }
 
   // One per event of the morph, in order (faces removed and rim length are filled by Build).
   const std::vector<EventSurgery> &Outcomes() const { return outcomes_; }
@@ -143,7 +149,6 @@ class Surgery {
     std::array<Point3, 3> bary;      // barycentric coordinates of its corners in the root face
     std::array<bool, 3> border{};    // edge e (v[e], v[e+1]) lies on a boundary of the source
     int state = kAlive;              // kAlive, kSplit, or the outcome (event) that removed it
-    bool refinable = false;
     int component = 0;               // connected component of the source
   };
   static constexpr int kAlive = -1, kSplit = -2;
@@ -188,7 +193,8 @@ class Surgery {
   std::vector<TopologyEvent> events_;           // the morph's, in order
   std::size_t next_ = 0;                        // the first event of a step not yet seen
   std::vector<std::size_t> arriving_;           // events away from the tracked surface, which is nearing them
-  bool refineStretched_ = false;                // stretched edges are split (from the start, or after a cut)
+  bool growing_ = false;                        // the morph grows the surface: stretched edges split anywhere
+  bool cut_ = false;                            // a cut has changed the surface: long edges at its rims split
 };
 
 // in:  cut (after surgery)
