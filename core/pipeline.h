@@ -14,8 +14,9 @@
 // would grow a part from nothing), the topology events along it (morph_topology.h) and the
 // plan of which are cut (surgery_plan.h), the step loop (velocity, tracking, surgery), and
 // the outputs with their figures. Where that map's figures fail, the other morphs are tried
-// too (grow_shrink.h or the linear blend, then inflate_shrink.h) and the best map kept
-// (Report::morphsTried).
+// too (grow_shrink.h or the linear blend, then inflate_shrink.h; with a warp, the warp through
+// the anchors and as many more read from the first map: pipeline.cpp, AddAnchorsFromMap) and
+// the best map kept (Report::morphsTried).
 // The inputs are checked and repaired on private copies first (input.h: what was repaired
 // goes to Report::repairs); a run whose grid does not fit in the memory the process may
 // have is refused before anything large is allocated (memory.h); a map whose own figures
