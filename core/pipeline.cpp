@@ -393,12 +393,12 @@ bool CutRight(const Report &r) { return !r.cutPredicted || r.CutAsNeeded(); }
 // seams the target does not need wherever the topology changed; a stretched one is only
 // coarse there: 3holes -> rocker-arm turned at 64 cells, the linear blend cut as needed with
 // a 8.3% edge against inflate-then-shrink overlapped, 1/8/-6 where 1/4/-4 is needed); then
-// less flipped and uncovered area (unless byArea is false: then a tie is no better).
-bool Better(const Report &a, const Report &b, bool byArea = true) {
+// less flipped and uncovered area.
+bool Better(const Report &a, const Report &b) {
   const int fa = Failures(a), fb = Failures(b);
   if (fa != fb) return fa < fb;
   if (CutRight(a) != CutRight(b)) return CutRight(a);
-  return byArea && a.quality.flippedAreaShare + (1 - a.quality.coverage) < b.quality.flippedAreaShare + (1 - b.quality.coverage);
+  return a.quality.flippedAreaShare + (1 - a.quality.coverage) < b.quality.flippedAreaShare + (1 - b.quality.coverage);
 }
 
 // The share of the target the map gets wrong by area: uncovered, or covered by flipped faces.
@@ -440,11 +440,12 @@ void Adopt(Result &to, Result &from) {
 // cut's vertices (on the source), continuing from the anchors m.a holds, each paired with its
 // image (placed). The warp then carries the first map's alignment everywhere, not only near
 // the user's anchors, so that fewer parts of the target are born where the source's do not
-// overlap them. TOPKIDS (5 pairs -> kid00, grid 64), error x 100 / coverage with K anchors,
-// then with K more read from that map, as a prototype outside the pipeline: K = 16 6.70 / 0.913
-// -> 6.42 / 0.915 (flipped as tracked 13.9% -> 10.0%); K = 8 9.64 / 0.846 -> 9.41 / 0.864. A
-// second and third round drift back (6.50, 6.67): the read anchors' errors add up. Anchors
-// whose images coincide with one already held are passed over (the warp needs distinct points).
+// overlap them; the map with the better figures is kept (Better). TOPKIDS (5 pairs -> kid00,
+// grid 64), error x 100 / coverage / flipped after untangling, K anchors: K = 16 6.70 / 0.913 /
+// 0.88% -> 6.51 / 0.920 / 0.72%; K = 8 9.64 / 0.846 / 1.82% -> 9.43 / 0.868 / 1.13%. Always the
+// second map (a prototype outside the pipeline): 6.42 and 9.41; a second and third round
+// drift back (6.50, 6.67): the read anchors' errors add up. Anchors whose images coincide with
+// one already held are passed over (the warp needs distinct points).
 void AddAnchorsFromMap(Result &map, Meshes &m, std::size_t count) {
   const Mesh &cut = map.cut;
   auto image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(map.cut, "TargetPosition");
@@ -816,8 +817,7 @@ void MapPlaced(Meshes &m, const std::vector<AnchorPair> &anchors, const Options 
                                                                    " of its anchors read from the map before)"
                                                              : ""));
     m.a.resize(anchors.size()), m.b.resize(anchors.size());
-    if (n > 0 && (order[n].refined ? !Better(result.report, other.report, false) : Better(other.report, result.report)))
-      Adopt(result, other), kept = n;
+    if (n > 0 && Better(other.report, result.report)) Adopt(result, other), kept = n;
     if (Failures(result.report) == 0) break;
   }
   if (tried.size() > 1) {
