@@ -35,8 +35,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <memory>
 
 namespace eulermap {
@@ -445,15 +445,15 @@ void Adopt(Result &to, Result &from) {
 // 0.88% -> 6.51 / 0.920 / 0.72%; K = 8 9.64 / 0.846 / 1.82% -> 9.43 / 0.868 / 1.13%. Always the
 // second map (a prototype outside the pipeline): 6.42 and 9.41; a second and third round
 // drift back (6.50, 6.67): the read anchors' errors add up. Anchors whose images coincide with
-// one already held are passed over (the warp needs distinct points).
-void AddAnchorsFromMap(Result &map, Meshes &m, std::size_t count) {
+// one already held are passed over (the warp needs distinct points). Returns how many were added.
+std::size_t AddAnchorsFromMap(Result &map, Meshes &m, std::size_t count) {
   const Mesh &cut = map.cut;
   auto image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(map.cut, "TargetPosition");
   const double apart = 1e-6 * m.placed.bbox.Diag();  // images closer than this coincide
   std::vector<double> distance(cut.vert.size(), std::numeric_limits<double>::max());
   for (std::size_t v = 0; v < cut.vert.size(); ++v)
     for (const Point3 &a : m.a) distance[v] = std::min(distance[v], vcg::Distance(cut.vert[v].cP(), a));
-  const std::size_t target = m.a.size() + count;
+  const std::size_t held = m.a.size(), target = held + count;
   while (m.a.size() < target) {
     const std::size_t v = std::max_element(distance.begin(), distance.end()) - distance.begin();
     if (distance[v] <= 0) break;  // every vertex taken or passed over
@@ -463,6 +463,7 @@ void AddAnchorsFromMap(Result &map, Meshes &m, std::size_t count) {
     m.a.push_back(p), m.b.push_back(b);
     for (std::size_t w = 0; w < cut.vert.size(); ++w) distance[w] = std::min(distance[w], vcg::Distance(cut.vert[w].cP(), p));
   }
+  return m.a.size() - held;
 }
 
 // One map with one morph (morph.h): where {f(., t) < 0} changes topology along it
@@ -805,7 +806,7 @@ void MapPlaced(Meshes &m, const std::vector<AnchorPair> &anchors, const Options 
     const Stage &attemptStage = n == 0 ? stage : rest;
     const bool first = order[n].blend == Morph::Blend::Linear && !order[n].refined;  // the morph made above
     t0 = Clock::now();
-    if (order[n].refined) AddAnchorsFromMap(result, m, anchors.size());
+    if (order[n].refined && AddAnchorsFromMap(result, m, anchors.size()) == 0) continue;  // the same warp again
     const auto morph = first ? std::move(linear) : std::make_unique<const Morph>(fields.f0, fields.f1, m.a, m.b, order[n].blend);
     const double setup = Seconds(t0);
     MorphEvents events = first ? std::move(linearEvents) : FindEvents(*morph, m, grid, options, attemptStage);
