@@ -81,10 +81,11 @@ std::vector<std::size_t> NearestRows(const Eigen::MatrixXd &from, const Eigen::M
 // orthogonalised against `locked` and all vectors before it, twice (full reorthogonalisation:
 // no ghost copies of converged pairs). Every 10 steps past `wanted` it checks the largest
 // Ritz values theta of the tridiagonal T: the residual of the pair of T's eigenvector s is
-// |beta_m s_m|. Fewer pairs where the complement is smaller.
+// |beta_m s_m|. Fewer pairs where the complement is smaller; none where `interrupt` stops it
+// (it asks before each step).
 template <class Operator>
 void Lanczos(const Operator &op, Eigen::Index n, const Eigen::MatrixXd &locked, Eigen::Index wanted, std::mt19937 &random,
-             Eigen::MatrixXd &vectors, Eigen::VectorXd &values) {
+             const Interrupt &interrupt, Eigen::MatrixXd &vectors, Eigen::VectorXd &values) {
   const Eigen::Index room = n - locked.cols();
   wanted = std::min(wanted, room);
   if (wanted <= 0) {
@@ -109,6 +110,10 @@ void Lanczos(const Operator &op, Eigen::Index n, const Eigen::MatrixXd &locked, 
   fresh(0);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz;
   for (Eigen::Index j = 0;; ++j) {
+    if (interrupt.Stop()) {
+      vectors.resize(n, 0), values.resize(0);
+      return;
+    }
     Eigen::VectorXd w = op(q.col(j));
     alpha.push_back(q.col(j).dot(w));
     orthogonalise(w, j + 1);
@@ -147,7 +152,7 @@ void Lanczos(const Operator &op, Eigen::Index n, const Eigen::MatrixXd &locked, 
 // 2l + 1) come only from rounding, and may come after the pairs wanted converged (a sphere
 // at 16 pairs: the 7th of l = 3 missed). So Lanczos runs again orthogonal to the pairs found,
 // and what it finds above the k-th theta joins them, until it finds nothing there.
-LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k) {
+LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k, const Interrupt &interrupt) {
   constexpr Eigen::Index kDeflated = 8;  // pairs each further run looks for
   LaplaceBasis basis;
   Eigen::SparseMatrix<double> stiffness;
@@ -167,11 +172,13 @@ LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k) {
   std::mt19937 random(1);
   Eigen::MatrixXd y;
   Eigen::VectorXd theta;
-  Lanczos(op, n, Eigen::MatrixXd(n, 0), k, random, y, theta);
+  Lanczos(op, n, Eigen::MatrixXd(n, 0), k, random, interrupt, y, theta);
   for (;;) {
+    if (interrupt.Cancelled()) return basis;
     Eigen::MatrixXd more;
     Eigen::VectorXd moreTheta;
-    Lanczos(op, n, y, kDeflated, random, more, moreTheta);
+    Lanczos(op, n, y, kDeflated, random, interrupt, more, moreTheta);
+    if (interrupt.Cancelled()) return basis;
     const double kth = theta.minCoeff();
     std::vector<Eigen::Index> order;  // the pairs found so far and the new ones above the k-th, by theta
     Eigen::MatrixXd all(n, y.cols() + more.cols());
@@ -201,7 +208,7 @@ LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k) {
 std::vector<std::size_t> ZoomOut(const LaplaceBasis &source, const LaplaceBasis &target,
                                  const std::vector<std::size_t> &samples, const Eigen::VectorXd &weights,
                                  const std::vector<std::size_t> &candidates, std::vector<std::size_t> map, int from,
-                                 int to, int step, const std::vector<std::size_t> &query) {
+                                 int to, int step, const std::vector<std::size_t> &query, const Interrupt &interrupt) {
   const Eigen::VectorXd root = weights.cwiseSqrt();
   auto rows = [](const LaplaceBasis &basis, const std::vector<std::size_t> &vertices, int k) {
     Eigen::MatrixXd r(Eigen::Index(vertices.size()), k);
@@ -211,6 +218,7 @@ std::vector<std::size_t> ZoomOut(const LaplaceBasis &source, const LaplaceBasis 
   const Eigen::MatrixXd a = rows(source, samples, to);
   const Eigen::MatrixXd b = rows(target, candidates, to);
   for (int k = std::min(from, to);; k = std::min(k + step, to)) {
+    if (interrupt.Stop()) return {};
     const Eigen::MatrixXd c = (root.asDiagonal() * a.leftCols(k)).colPivHouseholderQr().solve(root.asDiagonal() * rows(target, map, k));
     if (k == to) return NearestRows(rows(source, query, k), target.phi.leftCols(k) * c.transpose());
     const std::vector<std::size_t> nearest = NearestRows(a.leftCols(k), b.leftCols(k) * c.transpose());

@@ -11,6 +11,7 @@
 // the pointwise map that C_k induces, k growing step by step.
 #pragma once
 
+#include "interrupt.h"
 #include "mesh.h"
 
 #include <Eigen/Core>
@@ -28,7 +29,9 @@ struct LaplaceBasis {
 
 // The first min(k, vertices) eigenpairs of L phi = lambda M phi on `mesh` scaled to unit area.
 // Unreferenced vertices get a tiny mass and no stiffness; clean them before (input.h does).
-LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k);
+// `interrupt` is asked before each Lanczos step (a few milliseconds on a 12k-vertex scan); where
+// it stops, phi has no columns.
+LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k, const Interrupt &interrupt = Interrupt());
 
 // in:  the two bases, source vertices `samples`, the share of the source's area each stands
 //      for (`weights`), the target vertices the maps between refinements choose among
@@ -44,9 +47,11 @@ LaplaceBasis ComputeLaplaceBasis(const Mesh &mesh, int k);
 //      phi_source(v) (ZoomOut's Eq. 3; C_k^T stands for C_k^-1, as an isometry's functional map
 //      is orthogonal). The other way round, phi_source(v) C_k against phi_target(w), the read
 //      anchors of TOPKIDS kid01 lie 3.96 x 100 from the truth on mean instead of 2.46 (pyFM's).
+//      `interrupt` is asked before each k; where it stops, the result is empty.
 std::vector<std::size_t> ZoomOut(const LaplaceBasis &source, const LaplaceBasis &target,
                                  const std::vector<std::size_t> &samples, const Eigen::VectorXd &weights,
                                  const std::vector<std::size_t> &candidates, std::vector<std::size_t> map, int from,
-                                 int to, int step, const std::vector<std::size_t> &query);
+                                 int to, int step, const std::vector<std::size_t> &query,
+                                 const Interrupt &interrupt = Interrupt());
 
 }  // namespace eulermap

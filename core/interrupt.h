@@ -7,7 +7,8 @@
 // kNodesBetweenPolls nodes of a distance-transform sweep (distance_transform.h), of each
 // pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
 // system's assembly, of the labelling of the morph's first inside set and of each step's
-// sign flips (zero_set_topology.h); kBytesBetweenPolls of a large array while it is filled
+// sign flips (zero_set_topology.h); a Lanczos step of a Laplace-Beltrami basis and a
+// refinement of ZoomOut (functional_map.h); kBytesBetweenPolls of a large array while it is filled
 // (AssignPolling, FillPolling); and once a system is assembled. The pipeline reports its
 // stages between them (pipeline.h).
 //

@@ -517,7 +517,7 @@ struct ReadAnchors {
   std::string notRead;  // why none were added, for the log
 };
 
-ReadAnchors AddAnchorsFromMap(Result &map, Meshes &m) {
+ReadAnchors AddAnchorsFromMap(Result &map, Meshes &m, const Interrupt &interrupt) {
   auto image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(map.cut, "TargetPosition");
   // The source vertices the cut kept (surgery keeps their positions), with their images.
   std::map<std::tuple<double, double, double>, std::size_t> cutVertex;
@@ -536,8 +536,10 @@ ReadAnchors AddAnchorsFromMap(Result &map, Meshes &m) {
   std::vector<Point3> partners;  // on the target, not placed
   for (std::size_t v : chosen) partners.push_back(keptImage[v]);
   if (m.source.vert.size() <= kSpectralVertices && m.target.vert.size() <= kSpectralVertices) {
-    if (!m.sourceBasis) m.sourceBasis = std::make_unique<const LaplaceBasis>(ComputeLaplaceBasis(m.source, kZoomOutTo));
-    if (!m.targetBasis) m.targetBasis = std::make_unique<const LaplaceBasis>(ComputeLaplaceBasis(m.target, kZoomOutTo));
+    if (!m.sourceBasis) m.sourceBasis = std::make_unique<const LaplaceBasis>(ComputeLaplaceBasis(m.source, kZoomOutTo, interrupt));
+    if (interrupt.Cancelled()) throw Error("cancelled");
+    if (!m.targetBasis) m.targetBasis = std::make_unique<const LaplaceBasis>(ComputeLaplaceBasis(m.target, kZoomOutTo, interrupt));
+    if (interrupt.Cancelled()) throw Error("cancelled");
     if (m.sourceBasis->phi.cols() == kZoomOutTo && m.targetBasis->phi.cols() == kZoomOutTo) {
       // The first map between vertices: each sample's image's nearest corner.
       const std::vector<std::size_t> samples = FarthestVertices(m.source, kept, {}, kZoomOutSamples);
@@ -553,7 +555,8 @@ ReadAnchors AddAnchorsFromMap(Result &map, Meshes &m) {
       const std::vector<std::size_t> refined =
           ZoomOut(*m.sourceBasis, *m.targetBasis, samples, CellAreas(m.source, m.sourceBasis->mass, kept, samples),
                   FarthestVertices(m.target, AllVertices(m.target), {}, kZoomOutSamples), start,
-                  kZoomOutFrom, kZoomOutTo, kZoomOutStep, chosen);
+                  kZoomOutFrom, kZoomOutTo, kZoomOutStep, chosen, interrupt);
+      if (interrupt.Cancelled()) throw Error("cancelled");
       std::size_t near = 0;  // partners within kAgreementDiagonal of the map's image
       for (std::size_t n = 0; n < chosen.size(); ++n)
         near += vcg::Distance(m.target.vert[refined[n]].cP(), partners[n]) <= kAgreementDiagonal * m.target.bbox.Diag();
@@ -924,7 +927,7 @@ void MapPlaced(Meshes &m, const std::vector<AnchorPair> &anchors, const Options 
     t0 = Clock::now();
     if (order[n].refined) {
       attemptStage(0, "anchors read from the map before (ZoomOut)");
-      const ReadAnchors read = AddAnchorsFromMap(result, m);
+      const ReadAnchors read = AddAnchorsFromMap(result, m, interrupt);
       if (read.added == 0) {  // and the next round would read none either
         tried.push_back(read.notRead);
         break;

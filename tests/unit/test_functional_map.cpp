@@ -35,6 +35,26 @@ TEST(LaplaceBasis, SphereSpectrumIsAnalytic) {
   EXPECT_LT((basis.phi.col(0).array() - basis.phi.col(0).mean()).abs().maxCoeff(), 1e-6);
 }
 
+// Cancel (interrupt.h): the basis asks before each Lanczos step, so a host's progress bar
+// moves at least once a step (more than k of them) and Cancel stops it at the next one, with
+// no call after that and no basis.
+TEST(LaplaceBasis, AsksTheInterruptEachStepAndStopsWhenCancelled) {
+  Mesh sphere;
+  MakeSphere(sphere, Point3(0, 0, 0), 1.0, 4);
+  int polls = 0;
+  const LaplaceBasis whole = ComputeLaplaceBasis(sphere, 16, Interrupt([&] { return ++polls > 0; }));
+  EXPECT_EQ(whole.phi.cols(), 16);
+  EXPECT_GT(polls, 16);
+  int cancelledAt = 0;
+  const Interrupt cancel([&] { return ++cancelledAt < 5; });
+  const LaplaceBasis cut = ComputeLaplaceBasis(sphere, 16, cancel);
+  EXPECT_TRUE(cancel.Cancelled());
+  EXPECT_EQ(cut.phi.cols(), 0);
+  EXPECT_EQ(cancelledAt, 5);
+  const Interrupt stopNow([] { return false; });
+  EXPECT_TRUE(ZoomOut(whole, whole, {0, 1}, Eigen::VectorXd::Ones(2), {0, 1}, {0, 1}, 4, 16, 4, {0}, stopNow).empty());
+}
+
 TEST(ZoomOut, RefinesANoisyMapBetweenTwoMeshingsOfOneShape) {
   Mesh source, target;
   LoadMesh(SampleFile("spot.ply"), source);
