@@ -80,7 +80,7 @@ TEST(Topkids, MoreAnchorsLowerTheError) {
 // made again through those and 128 more read from it, their partners refined by ZoomOut
 // (functional_map.h). The first map covers 91.5% (its hands and feet, thinner than two
 // cells, are born in the morph), the one through the read anchors 98.1%. By the protocol
-// (tests/bench/topkids) error x 100 2.29, coverage 0.982, flipped after untangling 0.29%. The
+// (tests/bench/topkids) error x 100 2.50, coverage 0.979, flipped after untangling 0.33%. The
 // report's anchor figures stay the user's 16.
 TEST(Topkids, TheMapIsMadeAgainThroughAnchorsReadFromItByZoomOut) {
   const Map &map = Mapped("05", 16);
