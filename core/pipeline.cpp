@@ -210,7 +210,11 @@ struct Meshes {
   std::vector<Point3> a, targetAnchors, b;
   Topology sourceTopology;                 // the source mesh's own, seams as boundaries (topology.h)
   Topology sourceSurface, targetSurface;  // the surfaces the meshes describe (MeasureSurfaceTopology)
-  std::unique_ptr<const LaplaceBasis> sourceBasis, targetBasis;  // made when first needed (AddAnchorsFromMap)
+  struct Spectral {
+    LaplaceBasis source, target;
+    std::vector<std::size_t> candidates;  // the target vertices ZoomOut's iterations choose among
+  };
+  std::unique_ptr<const Spectral> spectral;  // made when first needed (AddAnchorsFromMap)
 };
 
 // The target placed by `place`, and what depends on where it is.
@@ -536,11 +540,17 @@ ReadAnchors AddAnchorsFromMap(Result &map, Meshes &m, const Interrupt &interrupt
   std::vector<Point3> partners;  // on the target, not placed
   for (std::size_t v : chosen) partners.push_back(keptImage[v]);
   if (m.source.vert.size() <= kSpectralVertices && m.target.vert.size() <= kSpectralVertices) {
-    if (!m.sourceBasis) m.sourceBasis = std::make_unique<const LaplaceBasis>(ComputeLaplaceBasis(m.source, kZoomOutTo, interrupt));
-    if (interrupt.Cancelled()) throw Error("cancelled");
-    if (!m.targetBasis) m.targetBasis = std::make_unique<const LaplaceBasis>(ComputeLaplaceBasis(m.target, kZoomOutTo, interrupt));
-    if (interrupt.Cancelled()) throw Error("cancelled");
-    if (m.sourceBasis->phi.cols() == kZoomOutTo && m.targetBasis->phi.cols() == kZoomOutTo) {
+    if (!m.spectral) {
+      auto spectral = std::make_unique<Meshes::Spectral>();
+      spectral->source = ComputeLaplaceBasis(m.source, kZoomOutTo, interrupt);
+      if (interrupt.Cancelled()) throw Error("cancelled");
+      spectral->target = ComputeLaplaceBasis(m.target, kZoomOutTo, interrupt);
+      if (interrupt.Cancelled()) throw Error("cancelled");
+      spectral->candidates = FarthestVertices(m.target, AllVertices(m.target), {}, kZoomOutSamples);
+      m.spectral = std::move(spectral);
+    }
+    const Meshes::Spectral &spectral = *m.spectral;
+    if (spectral.source.phi.cols() == kZoomOutTo && spectral.target.phi.cols() == kZoomOutTo) {
       // The first map between vertices: each sample's image's nearest corner.
       const std::vector<std::size_t> samples = FarthestVertices(m.source, kept, {}, kZoomOutSamples);
       const ClosestPoint targetIndex(m.target);
@@ -553,9 +563,8 @@ ReadAnchors AddAnchorsFromMap(Result &map, Meshes &m, const Interrupt &interrupt
         start[std::size_t(n)] = vcg::tri::Index(m.target, hit.face->cV(corner));
       });
       const std::vector<std::size_t> refined =
-          ZoomOut(*m.sourceBasis, *m.targetBasis, samples, CellAreas(m.source, m.sourceBasis->mass, kept, samples),
-                  FarthestVertices(m.target, AllVertices(m.target), {}, kZoomOutSamples), start,
-                  kZoomOutFrom, kZoomOutTo, kZoomOutStep, chosen, interrupt);
+          ZoomOut(spectral.source, spectral.target, samples, CellAreas(m.source, spectral.source.mass, kept, samples),
+                  spectral.candidates, start, kZoomOutFrom, kZoomOutTo, kZoomOutStep, chosen, interrupt);
       if (interrupt.Cancelled()) throw Error("cancelled");
       std::size_t near = 0;  // partners within kAgreementDiagonal of the map's image
       for (std::size_t n = 0; n < chosen.size(); ++n)
