@@ -7,6 +7,7 @@
 #include "tests/support/meshes.h"
 
 #include <gtest/gtest.h>
+#include <vcg/complex/append.h>
 
 #include <map>
 #include <string>
@@ -56,13 +57,13 @@ TEST(Interrupt, ProgressComesBeforeEachSolverIterationAndEverySlabOfASweep) {
 
 // Cancels at the n-th call of the first stage that `at` accepts; the map must throw Error
 // "cancelled" and make no call after that one.
-void ExpectCancelledAt(bool (*at)(const std::string &), int n) {
-  Case c;
+void ExpectCancelledAt(bool (*at)(const std::string &), int n, const Case &c = Case(),
+                       const std::vector<AnchorPair> &anchors = {}) {
   int seen = 0, after = 0;
   bool said = false;
   Result result;
   try {
-    ComputeMap(c.source, c.target, {}, c.options, result, [&](double, const std::string &stage) {
+    ComputeMap(c.source, c.target, anchors, c.options, result, [&](double, const std::string &stage) {
       if (said) return ++after, false;
       if (at(stage) && ++seen == n) said = true;
       return !said;
@@ -106,6 +107,27 @@ TEST(Interrupt, CancelWhileTheSolverAllocatesEndsTheMap) {
 TEST(Interrupt, CancelInsideTheDistanceSweepsEndsTheMap) {
   // The stage, the distance arrays, the four seeding phases, then the first sweep's poll.
   ExpectCancelledAt([](const std::string &stage) { return stage == "signed distance fields"; }, 7);
+}
+
+// A warped map that fails its own figures is made again through anchors read from it
+// (pipeline.cpp, AddAnchorsFromMap), whose Laplace-Beltrami bases ask before each Lanczos
+// step (functional_map.h). The target has a second part, a small sphere apart from the big
+// one, which the warp grows from nothing and no source point reaches: the first map covers
+// too little of the target, so the anchors are read (the stage, then the bases' polls).
+TEST(Interrupt, CancelWhileAnchorsAreReadEndsTheMap) {
+  Case c;
+  Mesh apart;
+  MakeSphere(apart, Point3(2, 0, 0), 0.4, 3);
+  vcg::tri::Append<Mesh, Mesh>::Mesh(c.target, apart);
+  std::vector<AnchorPair> anchors;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : {-1.0, 1.0}) {
+      Point3 p(0, 0, 0);
+      p[axis] = side;
+      anchors.push_back({p, p * 1.25, "a" + std::to_string(anchors.size())});
+    }
+  ExpectCancelledAt([](const std::string &stage) { return stage.find("anchors read from the map before") != std::string::npos; },
+                    20, c, anchors);
 }
 
 TEST(Interrupt, OnlyTheThreadThatMadeItAsksTheCallbackOthersReadTheAnswer) {
