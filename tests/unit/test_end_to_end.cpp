@@ -109,7 +109,9 @@ TEST(EndToEnd, CoverageNamesUncoveredParts) {
 // Anchors on tips the grid cuts short (report.h, AnchorFigure): camelhead onto its bend (the
 // benchmark's target) on Table 1 row 4's coarse grid, with 21 farthest-point anchors. Every
 // anchor more than a cell off lies on such a tip, the others end within a cell, and the
-// report names the far ones.
+// report names the far ones. The map fails only its longest edge (about four cells of this
+// grid), which anchors read from it do not mend: it is not made again through them
+// (pipeline.cpp, ReadingCanMend; two such rounds folded 1.20% of it).
 TEST(EndToEnd, AnchorsFarOffLieOnTipsTheGridCutsShort) {
   Mesh source, target;
   LoadMesh(DataMesh("camelhead.off"), source);
@@ -125,6 +127,8 @@ TEST(EndToEnd, AnchorsFarOffLieOnTipsTheGridCutsShort) {
   std::printf("%s", text.c_str());
   EXPECT_GE(r.quality.onSurfaceRate, 0.99);
   EXPECT_GE(r.quality.coverage, 0.97);
+  EXPECT_LE(r.quality.flippedAreaShare, 0.01);
+  EXPECT_EQ(r.morphsTried.find("read from the map before"), std::string::npos) << r.morphsTried;
   EXPECT_LE(r.quality.ResolvedAnchorErrorCells(), 1.0);
   int far = 0, resolved = 0;
   std::string named;  // the far anchors, as the note lists them
