@@ -591,20 +591,28 @@ void Surgery::Refine(std::vector<Point3> &position, const ScalarField &fNext, Tr
   EdgeFaces faces(tris_.size());  // refilled every pass
   std::vector<char> onRim;        // per point
   for (int pass = 0; pass < 4; ++pass) {
-    AliveEdges(faces);
-    onRim.assign(position.size(), 0);
-    for (const Tri &t : tris_)
-      if (t.state == kAlive)
-        for (int e = 0; e < 3; ++e)
-          if (!t.border[e] && faces.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1) onRim[t.v[e]] = onRim[t.v[(e + 1) % 3]] = 1;
     auto longEdge = [&](const Tri &t, int e) { return vcg::Distance(position[t.v[e]], position[t.v[(e + 1) % 3]]) > limit; };
+    // Only long edges are split: without one the pass has nothing to do, and the faces
+    // around every edge are not gathered for the rims (Table 1 row 2, cut at its 11th step:
+    // DEF 0.30 -> 0.15 s, most steps after the cut having no long edge).
+    if (std::none_of(tris_.begin(), tris_.end(),
+                     [&](const Tri &t) { return t.state == kAlive && (longEdge(t, 0) || longEdge(t, 1) || longEdge(t, 2)); }))
+      break;
+    if (cut_) {
+      AliveEdges(faces);
+      onRim.assign(position.size(), 0);
+      for (const Tri &t : tris_)
+        if (t.state == kAlive)
+          for (int e = 0; e < 3; ++e)
+            if (!t.border[e] && faces.Around(t.v[e], t.v[(e + 1) % 3]).size() == 1) onRim[t.v[e]] = onRim[t.v[(e + 1) % 3]] = 1;
+    }
     // Torn: long, and longer than kSpreadStretch times on the source (a surface growing into
     // a part of the target).
     auto torn = [&](const Tri &t, int e) {
       const int a = t.v[e], b = t.v[(e + 1) % 3];
       return longEdge(t, e) && vcg::Distance(position[a], position[b]) > kSpreadStretch * vcg::Distance(sourcePosition_[a], sourcePosition_[b]);
     };
-    auto atRim = [&](const Tri &t) { return onRim[t.v[0]] || onRim[t.v[1]] || onRim[t.v[2]]; };
+    auto atRim = [&](const Tri &t) { return onRim[t.v[0]] || onRim[t.v[1]] || onRim[t.v[2]]; };  // only when cut_
     // Long edges of faces at a rim, and torn edges anywhere while growing, get a midpoint, unless an end has
     // lost its level set: the part of the surface it followed vanished without a cut (a
     // handle lost that the plan leaves uncut, a membrane gone at once), so the pull-back
