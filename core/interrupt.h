@@ -2,8 +2,9 @@
 // hear Cancel on big grids (OpenVDB's interrupter): between bounded pieces of work they
 // ask Stop(), and stop when it says so.
 //
-// The pieces: a conjugate-gradient iteration of the velocity solve, and its multigrid
-// V-cycle's smoothing, restriction and coarse levels (velocity.h, multigrid.h), and
+// The pieces: a conjugate-gradient iteration of the velocity solve (its operator on its own,
+// and each pass of its start), and its multigrid V-cycle's smoothing (each colour on the
+// finest level), restriction and coarse levels (velocity.h, multigrid.h), and
 // kNodesBetweenPolls nodes of a distance-transform sweep (distance_transform.h), of each
 // pass that finds an inside set (sdf.h), of a warped morph frame (morph.h), of a velocity
 // system's assembly, of the labelling of the morph's first inside set and of each step's

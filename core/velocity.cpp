@@ -243,7 +243,9 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   // extrapolation in time; never a worse start than V_k-1). previous_ then holds V_k-1.
   const auto pd = Arrays(previous_);
   const double dAd = Apply(previous_, q);  // q = A d
+  interrupt.Stop();                         // each pass over the grid's nodes a piece of work
   Residual(x, r, r, p);  // r held b; p: scratch
+  interrupt.Stop();
   const double theta = dAd > 0 ? Dot(r, previous_) / dAd : 0;
   const float thetaf = float(theta);
   double rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // x += theta d, r -= theta A d, |r|^2
@@ -278,6 +280,7 @@ VelocitySolve VelocitySolver::SolveConjugateGradient(Vectors &x, double bNorm,
   };
   while (!done() && !interrupt.Stop()) {
     const double step = rz / Apply(p, q);  // q = A p
+    interrupt.Stop();                        // as long a piece of work as a colour's sweep
     const float stepf = float(step);
     rNorm = std::sqrt(BlockSum(n, [&](long begin, long end) {  // r -= step q, then |r|^2
       double t = 0;

@@ -151,7 +151,13 @@ struct Labelling {
 //      kNodesBetweenPolls nodes visited (interrupt.h)
 Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside, const std::function<void()> &poll) {
   Labelling l;
-  l.label.assign(inside.size(), -1);
+  // Every pass over the nodes asks poll every kNodesBetweenPolls nodes, the labels' first
+  // fill too (fresh pages are cleared at their first touch: 0.26 s unpolled at 256^3).
+  l.label.reserve(inside.size());
+  for (std::size_t n = 0; n < inside.size(); n += kNodesBetweenPolls) {
+    l.label.insert(l.label.end(), std::min(kNodesBetweenPolls, inside.size() - n), -1);
+    if (poll) poll();
+  }
   std::vector<std::size_t> stack;
   std::size_t visited = 0;
   auto fill = [&](bool side, std::uint32_t adjacency, int id) {
@@ -164,10 +170,13 @@ Labelling Label(const Lattice &lattice, const std::vector<std::uint8_t> &inside,
       });
     }
   };
-  for (std::size_t n = 0; n < inside.size(); ++n)
+  for (std::size_t n = 0; n < inside.size(); ++n) {
+    if (poll && n % kNodesBetweenPolls == 0) poll();
     if (!inside[n] && l.label[n] < 0 && lattice.OnBorder(lattice.Node(n))) l.label[n] = 0, stack.push_back(n);
+  }
   fill(false, kN26, 0);
   for (std::size_t n = 0; n < inside.size(); ++n) {
+    if (poll && n % kNodesBetweenPolls == 0) poll();
     if (l.label[n] >= 0) continue;
     const bool side = inside[n];
     const int id = side ? l.components++ : 1 + l.cavities++;
