@@ -310,9 +310,9 @@ void BlockMultigrid::Cycle(std::size_t n, std::vector<double> *plane, const Inte
     return;
   }
   const int sweeps = n == 0 ? 1 : kCoarseSweeps;
-  // The finest level's sweeps are the longest pieces of a V-cycle (384^3 nodes: about a
-  // second between two polls on a slow day when asked only around both colours): a poll
-  // after each colour.
+  // A poll after each colour of the finest level: each is a pass over half its nodes, and
+  // no piece of work between two polls should be longer than one pass (the operator's, the
+  // restriction's); the longest gaps at 384^3 were elsewhere (docs/NOTES.md, session 30).
   for (int s = 0; s < sweeps; ++s) Sweep(l, 0, s == 0), poll(), Sweep(l, 1, false);
   poll();
   Residual(l);
