@@ -89,6 +89,33 @@ TEST(RefineStretched, AnEdgeOverAConvexCornerIsSplit) {
   for (int n = 3; n < cut.vn; ++n) EXPECT_LT(onTarget.Query(image[n]).distance, 1e-9);
 }
 
+TEST(RefineStretched, AnEdgeRoundAThinPlatesRimIsSplitOneThroughItIsNot) {
+  // A plate 0.4 thick. One face maps from its top to its bottom beside its rim x = 4: the
+  // chord wraps the rim (its midpoint 0.05 inside it), though the target faces opposite
+  // ways at its ends (a picture frame's edge, ladder -> frame at 64 cells: 6.3% of the
+  // diagonal left unsplit). Another maps from top to bottom in the middle: that chord runs
+  // through the plate (its midpoint nearest the top or the bottom, 0.2 inside), the two
+  // sides of a thin part, and stays.
+  for (const double x : {3.95, 2.0}) {
+    Mesh cut, target;
+    MakeBox(target, Box3(Point3(0, 0, 0), Point3(4, 4, 0.4)), 8);
+    vcg::tri::Allocator<Mesh>::AddVertices(cut, 3);
+    cut.vert[0].P() = Point3(0, 0, 0), cut.vert[1].P() = Point3(1, 0, 0), cut.vert[2].P() = Point3(0, 0.1, 0);
+    vcg::tri::Allocator<Mesh>::AddFace(cut, &cut.vert[0], &cut.vert[1], &cut.vert[2]);
+    Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
+    image[0] = Point3(x, 2, 0.4), image[1] = Point3(x, 2, 0), image[2] = Point3(x, 2.05, 0.4);
+    ClosestPoint onTarget(target);
+    const int added = RefineStretched(cut, onTarget, 0.3);
+    if (x > 3) {
+      EXPECT_GT(added, 0);
+      EXPECT_LT(LongestImage(cut, image), 0.3);
+      for (int n = 3; n < cut.vn; ++n) EXPECT_NEAR(image[n].X(), 4, 1e-9);  // on the rim
+    } else {
+      EXPECT_EQ(added, 0);
+    }
+  }
+}
+
 // A flat grid of unit squares, (columns + 1) x (rows + 1) vertices, vertex (i, j) = i + j (columns + 1).
 void MakeGrid(Mesh &m, int columns, int rows) {
   auto v = vcg::tri::Allocator<Mesh>::AddVertices(m, (columns + 1) * (rows + 1));
