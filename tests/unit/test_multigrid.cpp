@@ -60,14 +60,14 @@ struct Problem {
   }
 
   // z = M^-1 r through the layout's arrays; returns r . z as Precondition gives it.
-  double Precondition(const std::vector<Point3> &r, std::vector<Point3> &z) {
+  double Precondition(const std::vector<Point3> &r, std::vector<Point3> &z, const Interrupt &interrupt = Interrupt()) {
     RedBlackArrays<3> rr, zz;
     rr.Resize(layout);
     zz.Resize(layout);
     grid.ForEachNode([&](int i, int j, int k, std::size_t n) {
       for (int a = 0; a < 3; ++a) rr.c[RedBlackLayout::Colour(i, j, k)][a][layout.Position(i, j, k)] = r[n][a];
     });
-    const double rz = multigrid.Precondition(rr, zz);
+    const double rz = multigrid.Precondition(rr, zz, interrupt);
     z.assign(r.size(), Point3(0, 0, 0));
     grid.ForEachNode([&](int i, int j, int k, std::size_t n) {
       for (int a = 0; a < 3; ++a) z[n][a] = zz.c[RedBlackLayout::Colour(i, j, k)][a][layout.Position(i, j, k)];
@@ -153,6 +153,18 @@ TEST(Multigrid, TheCycleIsSymmetricPositiveDefinite) {
   double uMv = 0, vMu = 0;
   for (std::size_t n = 0; n < u.size(); ++n) uMv += u[n] * Mv[n], vMu += v[n] * Mu[n];
   EXPECT_NEAR(uMv, vMu, 1e-4 * std::abs(uMv) + 1e-6 * Norm(u) * Norm(Mv));
+}
+
+// Progress on big grids (interrupt.h): a V-cycle asks at its start, after each colour of
+// the finest level's smoothing (half its nodes each, the longest pieces of the cycle), after
+// the residual's restriction and after the coarse levels.
+TEST(Multigrid, ACycleAsksAfterEachColourOfTheFinestLevel) {
+  Problem p(33);
+  int calls = 0;
+  const Interrupt counting([&] { return ++calls, true; });
+  std::vector<Point3> z;
+  p.Precondition(p.Smooth(), z, counting);
+  EXPECT_GE(calls, 6);
 }
 
 } // namespace

@@ -89,6 +89,29 @@ TEST(Velocity, WarmStartNeedsFewerIterations) {
   EXPECT_LE(warm.residual, 1e-4);
 }
 
+// Progress on big grids (interrupt.h): no piece of work between two calls of the host's
+// callback longer than about one pass over the nodes. The conjugate gradients' start is two
+// passes (the operator on the last step's change, the residual), each iteration its operator
+// then the rest (the preconditioner, the updates): a call after each.
+TEST(Velocity, TheConjugateGradientsAskAfterEachPassOverTheNodes) {
+  const Grid grid = UnitGrid(32);
+  const double dt = 1.0 / 40;
+  VelocitySolver solver(2, VelocitySolver::Method::ConjugateGradient, 1e-6, 2000);
+  VectorField V;
+  solver.Solve(GrowingSphere(grid, 8, 6, 0.3), GrowingSphere(grid, 8, 6, 0.3 + dt), dt, V);  // the arrays allocated
+  auto moving = [&](double t) {  // a sphere of radius 8 moving along x at speed 6: not a growth, V far from the last
+    ScalarField f(grid, 0.0);
+    const Point3 c = grid.Bounds().Center() + Point3(6 * t, 0, 0);
+    grid.ForEachNode([&](int i, int j, int k, std::size_t n) { f.values[n] = vcg::Distance(grid.Node(i, j, k), c) - 8; });
+    return f;
+  };
+  int calls = 0;
+  const Interrupt counting([&] { return ++calls, true; });
+  const VelocitySolve s = solver.Solve(moving(0.3), moving(0.3 + dt), dt, V, {}, {}, counting);
+  ASSERT_GT(s.iterations, 5);
+  EXPECT_GE(calls, 2 + 2 * s.iterations);
+}
+
 TEST(Velocity, GrowingSphereGivesARadialFieldWithTheGrowthSpeed) {
   const Grid grid = UnitGrid(40);
   const double dt = 1.0 / 40, speed = 6, r0 = 9;
