@@ -155,9 +155,10 @@ TEST(Multigrid, TheCycleIsSymmetricPositiveDefinite) {
   EXPECT_NEAR(uMv, vMu, 1e-4 * std::abs(uMv) + 1e-6 * Norm(u) * Norm(Mv));
 }
 
-// Progress on big grids (interrupt.h): a V-cycle asks at its start, after each colour of
-// the finest level's smoothing (half its nodes each, the longest pieces of the cycle), after
-// the residual's restriction and after the coarse levels.
+// Progress on big grids (interrupt.h): a V-cycle asks at its start, between the two colours
+// of each smoothing of the finest level (half its nodes each, the longest pieces of the
+// cycle), after its pre-smoothing, after the residual's restriction and after the coarse
+// levels: 6 calls (4 before the calls between the colours).
 TEST(Multigrid, ACycleAsksAfterEachColourOfTheFinestLevel) {
   Problem p(33);
   int calls = 0;
