@@ -53,6 +53,61 @@ std::vector<Move> Moves() {
   return moves;
 }
 
+// The withdrawing set's function at a node, u from 0 (the whole set) to 1 (the kept set):
+// u toKept - (1 - u) fromOutside, a blend of the node's distance (within the set) to the
+// kept nodes and its way in from the outside (CarveDistance); negative while the node stays.
+// Nodes leave in the order of fromOutside / (fromOutside + toKept), from 0 next to the
+// outside to 1 next to the kept set: a node leaves after the nodes between it and the
+// outside (no cavity is born) and before those between it and the kept set (no piece is left
+// away from it, as it would be if the deepest from the outside left last: a cage's centre).
+double Withdrawn(double toKept, double fromOutside, double u) {
+  if (toKept == kUnreached) return u > 0 ? kUnreached : -fromOutside;  // no kept node to withdraw onto: gone at once
+  if (fromOutside == kUnreached) return u < 1 ? -kUnreached : toKept;   // enclosed by the kept set: kept to the end
+  return u * toKept - (1 - u) * fromOutside;
+}
+
+// Whether leaving in the order of the distance to the kept set, the farthest first, would
+// bear a cavity: a node of `inside` not kept that the outside (the nodes not in `inside`, 26-
+// connected as zero_set_topology.h's complement, and beyond the grid) reaches only past nodes nearer the kept set
+// by more than a cell (the widest path from the outside, in the least toKept along it). A
+// cup's floor lies farther from the cup than its mouth does; a node no path from the outside
+// reaches is a cavity under every order, and does not count.
+bool FarthestFirstBearsACavity(const Grid &g, const std::vector<char> &inside, const std::vector<char> &kept,
+                               const std::vector<double> &toKept) {
+  const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
+  std::vector<double> widest(inside.size(), -kUnreached);
+  std::priority_queue<std::pair<double, std::size_t>> queue;  // the widest first
+  auto around = [&](std::size_t n, auto &&visit) {
+    const int x = int(n % nx), y = int(n / nx % ny), z = int(n / (std::size_t(nx) * ny));
+    for (int c = -1; c <= 1; ++c)
+      for (int b = -1; b <= 1; ++b)
+        for (int a = -1; a <= 1; ++a) {
+          const int i = x + a, j = y + b, k = z + c;
+          if ((a || b || c) && i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz) visit(g.Index(i, j, k));
+        }
+  };
+  for (std::size_t n = 0; n < inside.size(); ++n) {
+    if (!inside[n] || kept[n]) continue;
+    const int x = int(n % nx), y = int(n / nx % ny), z = int(n / (std::size_t(nx) * ny));
+    bool byOutside = std::min({x, y, z, nx - 1 - x, ny - 1 - y, nz - 1 - z}) == 0;  // the grid's border is outside
+    around(n, [&](std::size_t q) { byOutside = byOutside || !inside[q]; });
+    if (byOutside) widest[n] = toKept[n], queue.push({toKept[n], n});
+  }
+  while (!queue.empty()) {
+    const auto [w, n] = queue.top();
+    queue.pop();
+    if (w < widest[n]) continue;
+    around(n, [&](std::size_t q) {
+      if (!inside[q] || kept[q]) return;
+      const double through = std::min(w, toKept[q]);
+      if (through > widest[q]) widest[q] = through, queue.push({through, q});
+    });
+  }
+  for (std::size_t n = 0; n < inside.size(); ++n)
+    if (inside[n] && !kept[n] && widest[n] > -kUnreached && widest[n] < toKept[n] - g.h) return true;
+  return false;
+}
+
 } // namespace
 
 std::vector<double> DistanceWithin(const Grid &g, const std::vector<char> &inside, const std::vector<char> &seed) {
@@ -86,6 +141,12 @@ std::vector<double> DistanceWithin(const Grid &g, const std::vector<char> &insid
   return d;
 }
 
+std::vector<double> CarveDistance(const Grid &g, const std::vector<char> &inside, const std::vector<char> &kept) {
+  std::vector<char> through(inside.size()), outside(inside.size());
+  for (std::size_t n = 0; n < inside.size(); ++n) through[n] = !kept[n], outside[n] = !inside[n];
+  return DistanceWithin(g, through, outside);
+}
+
 GrowShrink::GrowShrink(const ScalarField &f0, const ScalarField &f1) : f0_(f0), f1_(f1) {
   const std::size_t count = f0.values.size();
   std::vector<char> inside(count), x0(count), x1(count);
@@ -96,6 +157,7 @@ GrowShrink::GrowShrink(const ScalarField &f0, const ScalarField &f1) : f0_(f0), 
   }
   d0_ = DistanceWithin(f0.grid, inside, x0);
   d1_ = DistanceWithin(f0.grid, inside, x1);
+  if (FarthestFirstBearsACavity(f0.grid, inside, x1, d1_)) carve_ = CarveDistance(f0.grid, inside, x1);
   for (std::size_t n = 0; n < count; ++n) {
     if (x1[n] && d0_[n] < kUnreached) l0_ = std::max(l0_, d0_[n]);
     if (x0[n] && d1_[n] < kUnreached) l1_ = std::max(l1_, d1_[n]);
@@ -115,7 +177,7 @@ void GrowShrink::Frame(double t, ScalarField &out) const {
   const double s = grow ? (switch_ > 0 ? t / switch_ : 1) : (switch_ < 1 ? (1 - t) / (1 - switch_) : 0);
   ParallelFor(count, [&](long n) {
     const double a = f0_.values[n], b = f1_.values[n];
-    out.values[n] = grow ? std::min(a, std::max(b, d0_[n] - s * l0_)) : std::min(b, std::max(a, d1_[n] - s * l1_));
+    out.values[n] = grow ? std::min(a, std::max(b, d0_[n] - s * l0_)) : std::min(b, std::max(a, carve_.empty() ? d1_[n] - s * l1_ : Withdrawn(d1_[n], carve_[n], 1 - s)));
   });
 }
 

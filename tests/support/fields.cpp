@@ -30,6 +30,39 @@ BallScene::BallScene(double xa, double ra, double xb, double rb) {
   f1 = Sampled(g, [=](const Point3 &p) { return std::min(a(p), b(p)); });
 }
 
+double CubeFrameDistance(const Point3 &p, double half, double bar) {
+  double d = 1e300;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double u : {-half, half})
+      for (double v : {-half, half}) {
+        Point3 lo, hi;
+        lo[axis] = -half - bar, hi[axis] = half + bar;
+        lo[(axis + 1) % 3] = u - bar, hi[(axis + 1) % 3] = u + bar;
+        lo[(axis + 2) % 3] = v - bar, hi[(axis + 2) % 3] = v + bar;
+        d = std::min(d, BoxSignedDistance(Box3(lo, hi), p));
+      }
+  return d;
+}
+
+CageScene::CageScene() {
+  g.origin = Point3(-1.2, -1.2, -1.2);
+  g.h = 0.06;
+  g.dims = vcg::Point3i(41, 41, 41);
+  f0 = Sampled(g, Ball(Point3(0, 0, 0), 1.1));
+  f1 = Sampled(g, [](const Point3 &p) { return CubeFrameDistance(p, 0.5, 0.09); });
+}
+
+CupScene::CupScene() {
+  g.origin = Point3(-0.9, -0.9, -0.9);
+  g.h = 0.04;
+  g.dims = vcg::Point3i(46, 46, 46);
+  f0 = Sampled(g, Ball(Point3(0.1, 0.05, 0.1), 0.75));
+  f1 = Sampled(g, [](const Point3 &p) {
+    const double r = std::hypot(p.X(), p.Y());
+    return std::max(std::max(r - 0.4, std::abs(p.Z()) - 0.5), -std::max(r - 0.32, -0.42 - p.Z()));
+  });
+}
+
 VectorField LinearField(const double A[3][3], const Point3 &c) {
   Grid g;
   g.origin = Point3(-1, -1, -1);

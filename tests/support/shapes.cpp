@@ -1,5 +1,7 @@
 #include "shapes.h"
 
+#include "fields.h"
+
 #include "meshes.h"
 
 #include "core/quality.h"
@@ -36,6 +38,13 @@ double Block(const Point3 &p, const Point3 &lo, const Point3 &hi) {
   const Point3 q(std::abs(p.X() - c.X()) - e.X(), std::abs(p.Y() - c.Y()) - e.Y(), std::abs(p.Z() - c.Z()) - e.Z());
   const Point3 out(std::max(q.X(), 0.0), std::max(q.Y(), 0.0), std::max(q.Z(), 0.0));
   return out.Norm() + std::min(std::max({q.X(), q.Y(), q.Z()}), 0.0);
+}
+
+// A capsule: the segment from a to b thickened by r.
+double Capsule(const Point3 &p, const Point3 &a, const Point3 &b, double r) {
+  const Point3 ab = b - a;
+  const double t = std::clamp(((p - a) * ab) / ab.SquaredNorm(), 0.0, 1.0);
+  return (p - (a + ab * t)).Norm() - r;
 }
 
 Sdf Union(std::vector<Sdf> parts) {
@@ -189,6 +198,57 @@ std::vector<Made> Catalogue() {
     arms.push_back([x](const Point3 &p) { return Block(p, Point3(x, -kHalf, 0.8), Point3(x + kLeg, kHalf, 0.9)); });
   }
   all.push_back({{"armchair", 1, 2}, Union(arms), furniture});
+  // Shapes made in session 32, after every rule above, to check the pipeline on shapes it was not tuned on.
+  std::vector<Sdf> pretzel;  // three rings in a triangle, each overlapping the other two
+  for (int k = 0; k < 3; ++k) {
+    const double a = M_PI / 2 + 2 * M_PI * k / 3;
+    const Point3 c(0.5 * std::cos(a), 0.5 * std::sin(a), 0);
+    pretzel.push_back([c](const Point3 &p) { return Torus(p, c, 0.42, 0.14); });
+  }
+  all.push_back({{"pretzel", 1, 3}, Union(pretzel), Box3(Point3(-1.1, -0.9, -0.25), Point3(1.1, 1.15, 0.25))});
+  all.push_back({{"spectacles", 1, 2},  // two thin rings and a bridge
+                 Union({[](const Point3 &p) { return Torus(p, Point3(-0.5, 0, 0), 0.35, 0.09); },
+                        [](const Point3 &p) { return Torus(p, Point3(0.5, 0, 0), 0.35, 0.09); },
+                        [](const Point3 &p) { return Block(p, Point3(-0.2, -0.05, -0.05), Point3(0.2, 0.05, 0.05)); }}),
+                 Box3(Point3(-1, -0.55, -0.2), Point3(1, 0.55, 0.2))});
+  all.push_back({{"key", 1, 1},  // a ring, a shaft and two teeth
+                 Union({[](const Point3 &p) { return Torus(p, Point3(-0.5, 0, 0), 0.3, 0.09); },
+                        [](const Point3 &p) { return Block(p, Point3(-0.25, -0.05, -0.04), Point3(0.8, 0.05, 0.04)); },
+                        [](const Point3 &p) { return Block(p, Point3(0.5, -0.2, -0.04), Point3(0.58, 0, 0.04)); },
+                        [](const Point3 &p) { return Block(p, Point3(0.68, -0.2, -0.04), Point3(0.76, 0, 0.04)); }}),
+                 Box3(Point3(-0.95, -0.5, -0.15), Point3(0.9, 0.5, 0.15))});
+  std::vector<Sdf> hand = {[](const Point3 &p) { return Ellipsoid(p, Point3(0.35, 0.42, 0.12)); }};
+  for (double x : {-0.24, -0.08, 0.08, 0.24})
+    hand.push_back([x](const Point3 &p) { return Capsule(p, Point3(x, 0.3, 0), Point3(x * 1.2, 0.8 - 3 * x * x, 0), 0.065); });
+  hand.push_back([](const Point3 &p) { return Capsule(p, Point3(0.25, -0.05, 0), Point3(0.6, 0.3, 0), 0.075); });
+  all.push_back({{"hand", 1, 0}, Union(hand), Box3(Point3(-0.5, -0.55, -0.25), Point3(0.75, 0.95, 0.25))});
+  std::vector<Sdf> star = {[](const Point3 &p) { return Ball(p, Point3(0, 0, 0), 0.4); }};
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : {-1.0, 1.0}) {
+      Point3 tip(0, 0, 0);
+      tip[axis] = 0.85 * side;
+      star.push_back([tip](const Point3 &p) { return Capsule(p, Point3(0, 0, 0), tip, 0.08); });
+    }
+  all.push_back({{"star", 1, 0}, Union(star), Box3(Point3(-1, -1, -1), Point3(1, 1, 1))});
+  all.push_back({{"cage", 1, 5},  // the twelve edges of a cube as bars
+                 [](const Point3 &p) { return CubeFrameDistance(p, 0.5, 0.06); },
+                 Box3(Point3(-0.7, -0.7, -0.7), Point3(0.7, 0.7, 0.7))});
+  all.push_back({{"cup", 1, 1},  // an open cylinder with a floor and the mug's handle
+                 [](const Point3 &p) {
+                   const double r = std::hypot(p.X(), p.Y());
+                   const double outer = std::max(r - 0.4, std::abs(p.Z()) - 0.5);
+                   const double inner = std::max(r - 0.32, -0.42 - p.Z());
+                   const double handle = std::max(std::hypot(std::hypot(p.X() - 0.4, p.Z()) - 0.25, p.Y()) - 0.07, 0.36 - p.X());
+                   return std::min(std::max(outer, -inner), handle);
+                 },
+                 Box3(Point3(-0.5, -0.5, -0.6), Point3(0.8, 0.5, 0.6))});
+  std::vector<Sdf> round = {[](const Point3 &p) { return std::max(std::hypot(p.X(), p.Y()) - 0.5, std::abs(p.Z() - 0.72) - 0.04); },
+                            [](const Point3 &p) { return std::max(std::hypot(p.X(), p.Y()) - 0.06, std::abs(p.Z() - 0.4) - 0.3); }};
+  for (int k = 0; k < 3; ++k) {
+    const double a = 2 * M_PI * k / 3;
+    round.push_back([a](const Point3 &p) { return Capsule(p, Point3(0, 0, 0.12), Point3(0.4 * std::cos(a), 0.4 * std::sin(a), 0.04), 0.045); });
+  }
+  all.push_back({{"round_table", 1, 0}, Union(round), Box3(Point3(-0.6, -0.6, -0.1), Point3(0.6, 0.6, 0.85))});
   return all;
 }
 

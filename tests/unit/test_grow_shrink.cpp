@@ -137,4 +137,16 @@ TEST(GrowShrink, NoPartIsBorn) {
   }
 }
 
+// A ball hollowed out into a cage, and into a cup: the withdrawal reaches the cage's inside
+// through its six windows, the cup's through its mouth. Leaving first the nodes farthest from
+// the target bears a cavity there (the cage's centre, the cup's floor), leaving last those
+// deepest from the outside leaves a piece apart from the target (the cage's centre).
+TEST(GrowShrink, HollowingACageOrACupBearsNoCavityAndLeavesNoPiece) {
+  const eulermap::testing::CageScene cage;
+  EXPECT_EQ(Measure(cage.f1).Handles(), 5);
+  EXPECT_EQ(eulermap::testing::FramesNotOnePartWithoutCavities(GrowShrink(cage.f0, cage.f1), 40), std::vector<std::string>());
+  const eulermap::testing::CupScene cup;
+  EXPECT_EQ(eulermap::testing::FramesNotOnePartWithoutCavities(GrowShrink(cup.f0, cup.f1), 40), std::vector<std::string>());
+}
+
 } // namespace

@@ -124,4 +124,16 @@ TEST(InflateShrink, NoPartIsBorn) {
   EXPECT_EQ(mostParts, 2);  // the split into X1's two balls
 }
 
+// A ball hollowed out into a cage, and into a cup: the withdrawal reaches the cage's inside
+// through its six windows, the cup's through its mouth. Leaving first the nodes farthest from
+// the target bears a cavity there (the cage's centre, the cup's floor), leaving last those
+// deepest from the outside leaves a piece apart from the target (the cage's centre).
+TEST(InflateShrink, HollowingACageOrACupBearsNoCavityAndLeavesNoPiece) {
+  const eulermap::testing::CageScene cage;
+  EXPECT_EQ(Measure(cage.f1).Handles(), 5);
+  EXPECT_EQ(eulermap::testing::FramesNotOnePartWithoutCavities(InflateShrink(cage.f0, cage.f1), 40), std::vector<std::string>());
+  const eulermap::testing::CupScene cup;
+  EXPECT_EQ(eulermap::testing::FramesNotOnePartWithoutCavities(InflateShrink(cup.f0, cup.f1), 40), std::vector<std::string>());
+}
+
 } // namespace
