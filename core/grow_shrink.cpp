@@ -67,11 +67,11 @@ double Withdrawn(double toKept, double fromOutside, double u) {
 }
 
 // Whether leaving in the order of the distance to the kept set, the farthest first, would
-// bear a cavity: a node of `inside` not kept that the outside (the nodes not in `inside`, 26-
-// connected as zero_set_topology.h's complement, and beyond the grid) reaches only past nodes nearer the kept set
-// by more than a cell (the widest path from the outside, in the least toKept along it). A
-// cup's floor lies farther from the cup than its mouth does; a node no path from the outside
-// reaches is a cavity under every order, and does not count.
+// bear a cavity: a node of `inside` not kept that the outside (the nodes not in `inside` and
+// beyond the grid, 26-connected as zero_set_topology.h's complement) reaches only past nodes
+// nearer the kept set by more than a cell (the widest path from the outside, in the least
+// toKept along it). A cup's floor lies farther from the cup than its mouth does; a node no
+// path from the outside reaches is a cavity under every order, and does not count.
 bool FarthestFirstBearsACavity(const Grid &g, const std::vector<char> &inside, const std::vector<char> &kept,
                                const std::vector<double> &toKept) {
   const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
@@ -177,7 +177,10 @@ void GrowShrink::Frame(double t, ScalarField &out) const {
   const double s = grow ? (switch_ > 0 ? t / switch_ : 1) : (switch_ < 1 ? (1 - t) / (1 - switch_) : 0);
   ParallelFor(count, [&](long n) {
     const double a = f0_.values[n], b = f1_.values[n];
-    out.values[n] = grow ? std::min(a, std::max(b, d0_[n] - s * l0_)) : std::min(b, std::max(a, carve_.empty() ? d1_[n] - s * l1_ : Withdrawn(d1_[n], carve_[n], 1 - s)));
+    if (grow)
+      out.values[n] = std::min(a, std::max(b, d0_[n] - s * l0_));
+    else
+      out.values[n] = std::min(b, std::max(a, carve_.empty() ? d1_[n] - s * l1_ : Withdrawn(d1_[n], carve_[n], 1 - s)));
   });
 }
 

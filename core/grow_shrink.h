@@ -72,6 +72,4 @@ constexpr double kChamferError = 0.15;
 //      (0 outside, +infinity inside `kept` and where unreached)
 std::vector<double> CarveDistance(const Grid &g, const std::vector<char> &inside, const std::vector<char> &kept);
 
-
-
 } // namespace eulermap
