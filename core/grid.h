@@ -25,6 +25,9 @@ struct Grid {
 
   std::size_t NodeCount() const { return std::size_t(dims.X()) * dims.Y() * dims.Z(); }
   std::size_t Index(int i, int j, int k) const { return i + std::size_t(dims.X()) * (j + std::size_t(dims.Y()) * k); }
+  vcg::Point3i Coordinates(std::size_t index) const {  // Index's inverse
+    return vcg::Point3i(int(index % dims.X()), int(index / dims.X() % dims.Y()), int(index / (std::size_t(dims.X()) * dims.Y())));
+  }
   Point3 Node(int i, int j, int k) const { return origin + Point3(i, j, k) * h; }
   Point3 ToGrid(const Point3 &p) const { return (p - origin) / h; }    // world -> fractional node coordinates
   Box3 Bounds() const { return Box3(origin, origin + Point3(dims.X() - 1, dims.Y() - 1, dims.Z() - 1) * h); }

@@ -78,18 +78,18 @@ bool FarthestFirstBearsACavity(const Grid &g, const std::vector<char> &inside, c
   std::vector<double> widest(inside.size(), -kUnreached);
   std::priority_queue<std::pair<double, std::size_t>> queue;  // the widest first
   auto around = [&](std::size_t n, auto &&visit) {
-    const int x = int(n % nx), y = int(n / nx % ny), z = int(n / (std::size_t(nx) * ny));
+    const vcg::Point3i p = g.Coordinates(n);
     for (int c = -1; c <= 1; ++c)
       for (int b = -1; b <= 1; ++b)
         for (int a = -1; a <= 1; ++a) {
-          const int i = x + a, j = y + b, k = z + c;
+          const int i = p.X() + a, j = p.Y() + b, k = p.Z() + c;
           if ((a || b || c) && i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz) visit(g.Index(i, j, k));
         }
   };
   for (std::size_t n = 0; n < inside.size(); ++n) {
     if (!inside[n] || kept[n]) continue;
-    const int x = int(n % nx), y = int(n / nx % ny), z = int(n / (std::size_t(nx) * ny));
-    bool byOutside = std::min({x, y, z, nx - 1 - x, ny - 1 - y, nz - 1 - z}) == 0;  // the grid's border is outside
+    const vcg::Point3i p = g.Coordinates(n);
+    bool byOutside = std::min({p.X(), p.Y(), p.Z(), nx - 1 - p.X(), ny - 1 - p.Y(), nz - 1 - p.Z()}) == 0;  // the grid's border is outside
     around(n, [&](std::size_t q) { byOutside = byOutside || !inside[q]; });
     if (byOutside) widest[n] = toKept[n], queue.push({toKept[n], n});
   }
@@ -126,7 +126,7 @@ std::vector<double> DistanceWithin(const Grid &g, const std::vector<char> &insid
     const auto [dist, n] = queue.top();
     queue.pop();
     if (dist > d[n]) continue;
-    const vcg::Point3i p(int(n % nx), int(n / nx % ny), int(n / (std::size_t(nx) * ny)));
+    const vcg::Point3i p = g.Coordinates(n);
     for (const Move &m : moves) {
       const vcg::Point3i q = p + m.offset;
       if (!in(q)) continue;

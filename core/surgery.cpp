@@ -80,11 +80,11 @@ class Swept {
     if (!between(x[0], x[1], x[2])) return;
     std::vector<std::size_t> stack = {g.Index(x[0], x[1], x[2])};
     nodes_.insert(stack.back());
-    const long nx = g.dims.X(), nxy = nx * g.dims.Y();
     while (!stack.empty()) {
       const std::size_t n = stack.back();
       stack.pop_back();
-      const int i = int(n % nx), j = int(n / nx % g.dims.Y()), k = int(n / nxy);
+      const vcg::Point3i node = g.Coordinates(n);
+      const int i = node.X(), j = node.Y(), k = node.Z();
       for (const auto &d : step)
         if (between(i + d[0], j + d[1], k + d[2]) && nodes_.insert(g.Index(i + d[0], j + d[1], k + d[2])).second)
           stack.push_back(g.Index(i + d[0], j + d[1], k + d[2]));

@@ -74,4 +74,10 @@ TEST(Grid, GivenNodeCountsAreKeptAndTheBoxFitsTightly) {
   EXPECT_NEAR(tightest, 0, 1e-12);
 }
 
+TEST(Grid, CoordinatesInvertIndex) {
+  Grid g;
+  g.dims = vcg::Point3i(5, 7, 3);
+  g.ForEachNode([&](int i, int j, int k, std::size_t n) { EXPECT_EQ(g.Coordinates(n), vcg::Point3i(i, j, k)) << n; });
+}
+
 } // namespace
