@@ -25,6 +25,12 @@
 // f = min(f1, max(f0, u d1 - (1 - u) c)), u = 1 - s, c the way in from outside G through its
 // nodes outside X1 (CarveDistance); nodes leave in the order of c / (c + d1), after those
 // between them and the outside and before those between them and X1 (mug -> cup: 100%).
+// Where the target fills a pocket of the source, joining the nodes nearest X0 first fills it
+// from its walls inward: the walls' fronts meet along its middle and the tracked surface folds
+// there (a cup onto a mug: 2.82% of the mapped area flipped at 64 cells). Then d0 gives way
+// to an order that fills the pocket from its floor up, tau = d0 - c (c the way in from
+// outside G through the nodes outside X0), closed so that the inside sets keep their
+// topology (grow_shrink.cpp, PistonOrder; cup -> mug: 0.02%).
 // Distances: Dijkstra over the 26 neighbours with steps h, sqrt 2 h, sqrt 3 h, a diagonal
 // step taken only where a path of grid edges through G joins its ends within the cell: so
 // every node of G has a 6-neighbour nearer to the seeds, and the inside sets keep the
@@ -53,7 +59,7 @@ class GrowShrink {
 
  private:
   const ScalarField &f0_, &f1_;
-  std::vector<double> d0_, d1_;  // per node; +infinity outside G or where unreached
+  std::vector<double> d0_, d1_;  // per node; +infinity outside G or where unreached (d0_: the piston's order where it fills a pocket)
   std::vector<double> carve_;    // per node, CarveDistance of G onto X1; empty where d1's order bears no cavity
   double l0_ = 0, l1_ = 0, switch_ = 0;
 };
