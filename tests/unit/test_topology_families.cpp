@@ -53,7 +53,7 @@ const Pair kFurtherPairs[] = {
     {"sphere", "plate3"},      {"plate3", "sphere"},       {"plate2", "ring1"},      {"ring2", "plate3"},
     {"sphere", "thin_ring"},   {"thin_ring", "sphere"},    {"sphere", "box_tunnel"}, {"box_tunnel", "sphere"},
     {"two_balls", "snowman"},  {"snowman", "two_balls"},   {"chair", "armchair"},    {"armchair", "chair"},
-    {"sphere", "cup"},         {"mug", "cup"},
+    {"sphere", "cup"},         {"mug", "cup"},             {"cup", "mug"},
 };
 
 // One mesh turned a quarter about the x axis (shapes.h, `_turned`), as files made with
