@@ -66,45 +66,61 @@ double Withdrawn(double toKept, double fromOutside, double u) {
   return u * toKept - (1 - u) * fromOutside;
 }
 
-// Whether leaving in the order of the distance to the kept set, the farthest first, would
-// bear a cavity: a node of `inside` not kept that the outside (the nodes not in `inside` and
-// beyond the grid, 26-connected as zero_set_topology.h's complement) reaches only past nodes
-// nearer the kept set by more than a cell (the widest path from the outside, in the least
-// toKept along it). A cup's floor lies farther from the cup than its mouth does; a node no
-// path from the outside reaches is a cavity under every order, and does not count.
-bool FarthestFirstBearsACavity(const Grid &g, const std::vector<char> &inside, const std::vector<char> &kept,
-                               const std::vector<double> &toKept) {
+// Calls visit(m) for each neighbour m of node n within the grid: its 6 face neighbours, or
+// all 26.
+template <class Visit> void ForNeighbours(const Grid &g, std::size_t n, bool facesOnly, Visit &&visit) {
+  const vcg::Point3i p = g.Coordinates(n);
+  for (int c = -1; c <= 1; ++c)
+    for (int b = -1; b <= 1; ++b)
+      for (int a = -1; a <= 1; ++a) {
+        const int i = p.X() + a, j = p.Y() + b, k = p.Z() + c;
+        if ((a || b || c) && (!facesOnly || std::abs(a) + std::abs(b) + std::abs(c) == 1) && i >= 0 && j >= 0 &&
+            k >= 0 && i < g.dims.X() && j < g.dims.Y() && k < g.dims.Z())
+          visit(g.Index(i, j, k));
+      }
+}
+
+// The widest path from the outside (the nodes not in `inside` and beyond the grid,
+// 26-connected as zero_set_topology.h's complement): per node that `through` holds (nodes of
+// `inside`), the most over 26-paths from the outside through such nodes of the least
+// `value` along them; -infinity where no path reaches (and off `through`).
+std::vector<double> WidestFromOutside(const Grid &g, const std::vector<char> &inside, const std::vector<char> &through,
+                                      const std::vector<double> &value) {
   const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
   std::vector<double> widest(inside.size(), -kUnreached);
   std::priority_queue<std::pair<double, std::size_t>> queue;  // the widest first
-  auto around = [&](std::size_t n, auto &&visit) {
-    const vcg::Point3i p = g.Coordinates(n);
-    for (int c = -1; c <= 1; ++c)
-      for (int b = -1; b <= 1; ++b)
-        for (int a = -1; a <= 1; ++a) {
-          const int i = p.X() + a, j = p.Y() + b, k = p.Z() + c;
-          if ((a || b || c) && i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz) visit(g.Index(i, j, k));
-        }
-  };
   for (std::size_t n = 0; n < inside.size(); ++n) {
-    if (!inside[n] || kept[n]) continue;
+    if (!through[n]) continue;
     const vcg::Point3i p = g.Coordinates(n);
     bool byOutside = std::min({p.X(), p.Y(), p.Z(), nx - 1 - p.X(), ny - 1 - p.Y(), nz - 1 - p.Z()}) == 0;  // the grid's border is outside
-    around(n, [&](std::size_t q) { byOutside = byOutside || !inside[q]; });
-    if (byOutside) widest[n] = toKept[n], queue.push({toKept[n], n});
+    ForNeighbours(g, n, false, [&](std::size_t q) { byOutside = byOutside || !inside[q]; });
+    if (byOutside) widest[n] = value[n], queue.push({value[n], n});
   }
   while (!queue.empty()) {
     const auto [w, n] = queue.top();
     queue.pop();
     if (w < widest[n]) continue;
-    around(n, [&](std::size_t q) {
-      if (!inside[q] || kept[q]) return;
-      const double through = std::min(w, toKept[q]);
-      if (through > widest[q]) widest[q] = through, queue.push({through, q});
+    ForNeighbours(g, n, false, [&, w = w](std::size_t q) {
+      if (!through[q]) return;
+      const double least = std::min(w, value[q]);
+      if (least > widest[q]) widest[q] = least, queue.push({least, q});
     });
   }
+  return widest;
+}
+
+// Whether leaving in the order of the distance to the kept set, the farthest first, would
+// bear a cavity: a node of `inside` not kept that the outside reaches only past nodes nearer
+// the kept set by more than a cell (WidestFromOutside, in the least toKept along the path).
+// A cup's floor lies farther from the cup than its mouth does; a node no path from the
+// outside reaches is a cavity under every order, and does not count.
+bool FarthestFirstBearsACavity(const Grid &g, const std::vector<char> &inside, const std::vector<char> &kept,
+                               const std::vector<double> &toKept) {
+  std::vector<char> withdrawing(inside.size());
+  for (std::size_t n = 0; n < inside.size(); ++n) withdrawing[n] = inside[n] && !kept[n];
+  const std::vector<double> widest = WidestFromOutside(g, inside, withdrawing, toKept);
   for (std::size_t n = 0; n < inside.size(); ++n)
-    if (inside[n] && !kept[n] && widest[n] > -kUnreached && widest[n] < toKept[n] - g.h) return true;
+    if (withdrawing[n] && widest[n] > -kUnreached && widest[n] < toKept[n] - g.h) return true;
   return false;
 }
 
@@ -116,21 +132,12 @@ bool FarthestFirstBearsACavity(const Grid &g, const std::vector<char> &inside, c
 // the middle of a rail grown from its two ends lie near the outside, and do not count.
 bool NearestFirstFoldsAPocket(const Grid &g, const std::vector<char> &inside, const std::vector<char> &x0,
                               const std::vector<double> &d0, const std::vector<double> &fromOutside) {
-  const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
   for (std::size_t n = 0; n < inside.size(); ++n) {
     if (!inside[n] || x0[n] || d0[n] == kUnreached || fromOutside[n] == kUnreached ||
         fromOutside[n] <= d0[n] + 2 * g.h)
       continue;
-    const vcg::Point3i p = g.Coordinates(n);
     bool ridge = true;
-    for (int axis = 0; axis < 3 && ridge; ++axis)
-      for (int side : {-1, 1}) {
-        vcg::Point3i q = p;
-        q[axis] += side;
-        if (q[axis] < 0 || q[axis] >= (axis == 0 ? nx : axis == 1 ? ny : nz)) continue;
-        const std::size_t m = g.Index(q.X(), q.Y(), q.Z());
-        if (inside[m] && d0[m] > d0[n]) ridge = false;
-      }
+    ForNeighbours(g, n, true, [&](std::size_t m) { ridge = ridge && !(inside[m] && d0[m] > d0[n]); });
     if (ridge) return true;
   }
   return false;
@@ -148,7 +155,6 @@ bool NearestFirstFoldsAPocket(const Grid &g, const std::vector<char> &inside, co
 std::vector<double> PistonOrder(const Grid &g, const std::vector<char> &inside, const std::vector<char> &x0,
                                 const std::vector<double> &d0, const std::vector<double> &fromOutside) {
   const std::size_t count = inside.size();
-  const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
   auto joining = [&](std::size_t n) { return inside[n] && !x0[n] && d0[n] < kUnreached; };
   double deepest = 0;
   for (std::size_t n = 0; n < count; ++n)
@@ -156,17 +162,6 @@ std::vector<double> PistonOrder(const Grid &g, const std::vector<char> &inside, 
   std::vector<double> tau(count, kUnreached);
   for (std::size_t n = 0; n < count; ++n)
     if (joining(n)) tau[n] = d0[n] - (fromOutside[n] < kUnreached ? fromOutside[n] : deepest);  // enclosed by X0: first
-  auto around = [&](std::size_t n, bool faces, auto &&visit) {
-    const vcg::Point3i p = g.Coordinates(n);
-    for (int c = -1; c <= 1; ++c)
-      for (int b = -1; b <= 1; ++b)
-        for (int a = -1; a <= 1; ++a) {
-          const int i = p.X() + a, j = p.Y() + b, k = p.Z() + c;
-          if ((a || b || c) && (!faces || std::abs(a) + std::abs(b) + std::abs(c) == 1) && i >= 0 && j >= 0 && k >= 0 &&
-              i < nx && j < ny && k < nz)
-            visit(g.Index(i, j, k));
-        }
-  };
   // J: the least over 6-paths from X0 of the most tau along them.
   std::vector<double> joined(count, kUnreached);
   {
@@ -174,14 +169,14 @@ std::vector<double> PistonOrder(const Grid &g, const std::vector<char> &inside, 
     for (std::size_t n = 0; n < count; ++n) {
       if (!joining(n)) continue;
       bool byX0 = false;
-      around(n, true, [&](std::size_t q) { byX0 = byX0 || x0[q]; });
+      ForNeighbours(g, n, true, [&](std::size_t q) { byX0 = byX0 || x0[q]; });
       if (byX0) joined[n] = tau[n], queue.push({tau[n], n});
     }
     while (!queue.empty()) {
       const auto [j, n] = queue.top();
       queue.pop();
       if (j > joined[n]) continue;
-      around(n, true, [&](std::size_t q) {
+      ForNeighbours(g, n, true, [&, j = j](std::size_t q) {
         if (!joining(q)) return;
         const double through = std::max(j, tau[q]);
         if (through < joined[q]) joined[q] = through, queue.push({through, q});
@@ -189,34 +184,16 @@ std::vector<double> PistonOrder(const Grid &g, const std::vector<char> &inside, 
     }
   }
   // The most over 26-paths from the outside of the least J along them (at most J).
-  std::vector<double> order(count, -kUnreached);
-  {
-    std::priority_queue<std::pair<double, std::size_t>> queue;
-    for (std::size_t n = 0; n < count; ++n) {
-      if (!joining(n) || joined[n] == kUnreached) continue;
-      const vcg::Point3i p = g.Coordinates(n);
-      bool byOutside = std::min({p.X(), p.Y(), p.Z(), nx - 1 - p.X(), ny - 1 - p.Y(), nz - 1 - p.Z()}) == 0;
-      around(n, false, [&](std::size_t q) { byOutside = byOutside || !inside[q]; });
-      if (byOutside) order[n] = joined[n], queue.push({joined[n], n});
-    }
-    while (!queue.empty()) {
-      const auto [w, n] = queue.top();
-      queue.pop();
-      if (w < order[n]) continue;
-      around(n, false, [&](std::size_t q) {
-        if (!joining(q) || joined[q] == kUnreached) return;
-        const double through = std::min(w, joined[q]);
-        if (through > order[q]) order[q] = through, queue.push({through, q});
-      });
-    }
-  }
+  std::vector<char> reached(count);
+  for (std::size_t n = 0; n < count; ++n) reached[n] = joining(n) && joined[n] < kUnreached;
+  std::vector<double> order = WidestFromOutside(g, inside, reached, joined);
   double first = kUnreached;
   for (std::size_t n = 0; n < count; ++n) {
-    if (joining(n) && joined[n] < kUnreached && order[n] == -kUnreached) order[n] = joined[n];  // enclosed by X0
-    if (joining(n) && joined[n] < kUnreached) first = std::min(first, order[n]);
+    if (reached[n] && order[n] == -kUnreached) order[n] = joined[n];  // enclosed by X0
+    if (reached[n]) first = std::min(first, order[n]);
   }
   for (std::size_t n = 0; n < count; ++n)
-    order[n] = x0[n] && inside[n] ? 0 : joining(n) && joined[n] < kUnreached ? order[n] - first + g.h : kUnreached;
+    order[n] = x0[n] && inside[n] ? 0 : reached[n] ? order[n] - first + g.h : kUnreached;
   return order;
 }
 
