@@ -65,4 +65,11 @@ CutDirection CutAxis(const TopologyEvent &event, const ScalarField &f, const std
   return {ToPoint(v).Normalize(), false};
 }
 
+std::array<Point3, 3> PrincipalDirections(const TopologyEvent &event, const ScalarField &f) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(NodeHessian(f, event.node));
+  std::array<Point3, 3> directions;
+  for (int c = 0; c < 3; ++c) directions[c] = ToPoint(Eigen::Vector3d(eigen.eigenvectors().col(c))).Normalize();
+  return directions;
+}
+
 } // namespace eulermap

@@ -27,6 +27,7 @@
 #include "saddle.h"
 #include "zero_set_topology.h"
 
+#include <array>
 #include <vector>
 
 namespace eulermap {
@@ -46,5 +47,10 @@ constexpr double kSaddleCells = 2;  // a saddle of V this near the event orients
 // in:  the event (its shape not None), f(., t_k+1) on the grid, the saddles of V_k
 // out: the cut's axis (above)
 CutDirection CutAxis(const TopologyEvent &event, const ScalarField &f, const std::vector<Saddle> &saddles);
+
+// The principal directions of f's Hessian at the event's node (unit length, by increasing
+// curvature): the planes a band may take where the axis' own cuts the surface otherwise than
+// the event does (surgery.h, step 2).
+std::array<Point3, 3> PrincipalDirections(const TopologyEvent &event, const ScalarField &f);
 
 } // namespace eulermap

@@ -146,7 +146,9 @@ std::string Report::ToText() const {
       const EventSurgery &s = surgery[n];
       if (s.outcome == EventCut::Cut)
         o << Format(": cut (axis from %s)%s, %d faces removed, rim length %.4g",
-                    s.axisFromSaddle ? "a saddle of V" : "f's Hessian",
+                    s.axisTurned       ? "another principal direction of f's Hessian: the first axis' band parted the surface otherwise than the event"
+                    : s.axisFromSaddle ? "a saddle of V"
+                                       : "f's Hessian",
                     s.stepsLate == 0 ? ""
                                      : Format(" at step %d, when the tracked surface reached it", e.step + 1 + s.stepsLate).c_str(),
                     s.facesRemoved, s.rimLength);

@@ -93,6 +93,7 @@ struct EventSurgery {
   EventCut outcome = EventCut::NotACutKind;
   double distanceCells = 0;   // from the event to the nearest tracked triangle, in cells (cut kinds only)
   bool axisFromSaddle = false;  // the cut's axis came from a saddle of V (else from f's Hessian)
+  bool axisTurned = false;      // a band along another principal direction of f's Hessian (surgery.h, step 2)
   int facesRemoved = 0;       // faces of the tracked surface removed (Cut only)
   double rimLength = 0;       // length of the boundary left, world units (Cut only)
   int stepsLate = 0;          // steps after the event's own that the tracked surface reached it (Cut only)

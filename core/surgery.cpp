@@ -255,10 +255,10 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
       const CutDirection axis = CutAxis(event, fNext, saddles);
       outcome.axisFromSaddle = axis.fromSaddle;
       bool bothSheets = true;
-      std::vector<int> faces = Crossing(event.position, axis.axis, shape, position, &bothSheets);
-      if (!bothSheets) {
-        outcome.outcome = EventCut::OneSheetTracked;
-      } else {
+      // The faces cut along an axis: (b), then (a) and (c) joined to them.
+      auto cutAlong = [&](const Point3 &d) {
+        std::vector<int> faces = Crossing(event.position, d, shape, position, &bothSheets);
+        if (!bothSheets) return faces;
         const std::vector<int> crossing = faces;
         for (int n : InSphere(event.position, position)) faces.push_back(n);
         // (c) where the step closes a gap at x, at the event's own step, the cut grows over
@@ -280,7 +280,28 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
         // Only what is joined to (b) through the cut's own faces, corner to corner: a piece of
         // (a) or (c) apart from both discs (or the band) lies on another layer of the tracked
         // surface, and cutting it would open a hole that no event calls for.
-        faces = JoinedTo(crossing, faces);
+        return JoinedTo(crossing, faces);
+      };
+      std::vector<int> faces = cutAlong(axis.axis);
+      // A band parts the surface where a part splits, and a handle's never does: where the
+      // axis' band does otherwise, the band of fewest faces along a principal direction of
+      // f's Hessian that does what the event does. At a handle's root the Hessian read one
+      // cell wide may point along the wall the handle leaves (cup -> ring1 at 64 cells: the
+      // band ran round the cup's whole wall, rim length 4.64, cut 2/4/-2 where 1/4/-2 was
+      // predicted).
+      const bool splits = event.kind == TopologyEventKind::PartSplit;
+      if (shape == CutShape::Band && !faces.empty() && Parts(faces) != splits) {
+        std::vector<int> fewest;
+        for (const Point3 &d : PrincipalDirections(event, fNext)) {
+          std::vector<int> other = cutAlong(d);
+          if (!other.empty() && Parts(other) == splits && (fewest.empty() || other.size() < fewest.size()))
+            fewest = std::move(other);
+        }
+        if (!fewest.empty()) faces = std::move(fewest), outcome.axisTurned = true;
+      }
+      if (!bothSheets) {
+        outcome.outcome = EventCut::OneSheetTracked;
+      } else {
         for (int n : faces)
           if (tris_[n].state == kAlive) tris_[n].state = outcome.event;
         cutting.push_back({outcome.event, event.position});
@@ -445,6 +466,34 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
   }
   if (seed < 0) return cut;
   return ConnectedFrom(seed, faces);
+}
+
+bool Surgery::Parts(const std::vector<int> &cut) const {
+  std::vector<char> removed(tris_.size(), 0);
+  for (int n : cut) removed[n] = 1;
+  const EdgeFaces faces = AliveEdges();
+  UnionFind pieces(int(tris_.size()));
+  std::vector<int> beside;  // the faces left next to the cut
+  for (int n = 0; n < int(tris_.size()); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state != kAlive) continue;
+    for (int e = 0; e < 3; ++e)
+      for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3])) {
+        if (removed[n] && !removed[m]) beside.push_back(m);
+        if (!removed[n] && !removed[m]) pieces.Merge(n, m);
+      }
+  }
+  // The pieces beside the cut that Clean keeps (not islands).
+  std::unordered_map<int, double> area;
+  for (int n : beside) area[pieces.Find(n)];
+  for (int n = 0; n < int(tris_.size()); ++n) {
+    const Tri &t = tris_[n];
+    if (t.state != kAlive || removed[n]) continue;
+    auto it = area.find(pieces.Find(n));
+    if (it != area.end()) it->second += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
+  }
+  const double island = kIslandShare * componentArea_[tris_[cut.front()].component];
+  return std::count_if(area.begin(), area.end(), [&](const auto &a) { return a.second >= island; }) >= 2;
 }
 
 std::vector<int> Surgery::Spread(const std::vector<int> &seeds, const std::function<bool(const Point3 &)> &near,

@@ -35,6 +35,9 @@
 //          another layer of the tracked surface that passes by);
 //          Band: the loop of faces crossing the plane through x normal to d around the neck,
 //          all of it, however far it reaches (a band cut short is a strip: one loop, not two);
+//          a band parts the surface where a part splits and never where a handle is lost:
+//          where d's band (with (a) and (c)) does otherwise, the band of fewest faces along
+//          a principal direction of f's Hessian that does what the event does;
 //      (c) at the event's own step, where the step closes a gap at x: the cut grows over the
 //          faces joined to it whose corners lie in cells the step swept into the inside set
 //          between two fronts around x (the nodes with f(., t_k) >= 0 > f(., t_k+1) joined to
@@ -169,6 +172,9 @@ class Surgery {
   // bothSheets: set false when a side has no tracked face (Discs).
   std::vector<int> Crossing(const Point3 &x, const Point3 &axis, CutShape shape, const std::vector<Point3> &position,
                             bool *bothSheets) const;
+  // Whether removing the faces `cut` (alive, joined) leaves the faces beside it in two or more
+  // pieces that are not islands (Clean): a band that parts the surface.
+  bool Parts(const std::vector<int> &cut) const;
   // Step 2 (c): the alive faces joined to seeds (not among them) through faces whose corners
   // are all near.
   std::vector<int> Spread(const std::vector<int> &seeds, const std::function<bool(const Point3 &)> &near,
