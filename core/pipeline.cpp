@@ -103,7 +103,8 @@ std::string Short(double x) {
 
 // Report::warnings: what to change, for a map whose own figures say it failed. toTarget takes
 // the placed frame (where the events lie) to the target's own.
-void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, const Similarity &toTarget, Report &rep) {
+void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, const Similarity &toTarget, const Topology &source,
+                   Report &rep) {
   auto percent = [](double x) {
     char text[16];
     std::snprintf(text, sizeof text, "%.1f%%", 100 * x);
@@ -146,14 +147,40 @@ void WarnOnFailure(const MapQuality &q, const MirrorTest &mirror, const Similari
              std::to_string(loops) + (loops == 1 ? " loop, " : " loops, ") + "Euler characteristic " +
              std::to_string(chi);
     };
-    rep.warnings.push_back("the cut source (" + figures(rep.cutComponents, rep.cutBoundaryLoops,
-                                                        rep.cutEulerCharacteristic) +
-                           ") is not what a continuous map onto the target needs (" +
-                           figures(rep.neededComponents, rep.neededBoundaryLoops, rep.neededEulerCharacteristic) +
-                           "), so the map folds or tears where the topology changed (" +
-                           (events.empty() ? std::string("no event found") : events) +
-                           "): raise grid_resolution so the parts that change are several cells wide, or give anchor "
-                           "pairs there");
+    // The cut each event surgery cut makes (topology.h, NeededCut, one event at a time): where
+    // it is the cut built, surgery did what the events asked, and the morph changed more than
+    // the map needs: it closed the source's handles (or split its parts) and opened the
+    // target's (or merged them) elsewhere (cup -> ring1 at 64 cells: a band round the cup's
+    // handle at step 3 and a disc pair where the floor opens at step 6, 1/4/-2 where 1/0/0).
+    int gained = 0, lost = 0, merged = 0, split = 0;
+    bool collapsed = false;
+    std::string cuts;  // the first few cut
+    for (std::size_t n = 0; n < rep.surgery.size(); ++n) {
+      const TopologyEvent &e = rep.topologyEvents[n];
+      collapsed = collapsed || rep.surgery[n].outcome == EventCut::Collapsed;
+      if (rep.surgery[n].outcome != EventCut::Cut) continue;
+      gained += e.kind == TopologyEventKind::HandleGained, lost += e.kind == TopologyEventKind::HandleLost;
+      merged += e.kind == TopologyEventKind::PartsMerged, split += e.kind == TopologyEventKind::PartSplit;
+      if (gained + lost + merged + split <= 5)
+        cuts += (cuts.empty() ? "" : "; ") + std::string(Name(e.kind)) + " at step " + std::to_string(e.step + 1);
+    }
+    const Topology byCuts = NeededCut(NeededCut(NeededCut(NeededCut(source, 0, gained), 0, -lost), split, 0), -merged, 0);
+    const bool asCut = !collapsed && byCuts.components == rep.cutComponents &&
+                       byCuts.boundaryLoops == rep.cutBoundaryLoops &&
+                       byCuts.eulerCharacteristic == rep.cutEulerCharacteristic;
+    const std::string built = figures(rep.cutComponents, rep.cutBoundaryLoops, rep.cutEulerCharacteristic),
+                      needed = figures(rep.neededComponents, rep.neededBoundaryLoops, rep.neededEulerCharacteristic);
+    if (asCut && (lost + split) > 0 && (gained + merged) > 0)
+      rep.warnings.push_back("the cut source (" + built + ") is what its cuts make, but a continuous map onto the target "
+                             "needs less (" + needed + "): the morph loses handles or parts of the source and gains "
+                             "others elsewhere, and surgery cuts each (" + cuts + "): give anchor pairs that put "
+                             "the source's handles and parts on the target's, so that the morph carries them");
+    else
+      rep.warnings.push_back("the cut source (" + built + ") is not what a continuous map onto the target needs (" +
+                             needed + "), so the map folds or tears where the topology changed (" +
+                             (events.empty() ? std::string("no event found") : events) +
+                             "): raise grid_resolution so the parts that change are several cells wide, or give "
+                             "anchor pairs there");
   }
   // Parts born from nothing (a minimum of f crossing zero): no tracked point reaches them
   // unless the surface grows into them. Places in the target's own frame, the first few.
@@ -764,7 +791,8 @@ void Attempt(Meshes &m, const Fields &fields, const Grid &grid, const std::vecto
   rep.cutVertices = cut.vn;
   rep.cutFaces = cut.fn;
   const std::size_t user = anchors.size();  // the user's anchors, which m.a and m.b hold first
-  WarnOnFailure(rep.quality, TestMirror({m.b.begin(), m.b.begin() + user}, {m.a.begin(), m.a.begin() + user}), back, rep);
+  WarnOnFailure(rep.quality, TestMirror({m.b.begin(), m.b.begin() + user}, {m.a.begin(), m.a.begin() + user}), back,
+                m.sourceTopology, rep);
   rep.times.quality = Seconds(t0);
 }
 
