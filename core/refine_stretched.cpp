@@ -2,6 +2,7 @@
 
 #include "edge_faces.h"
 #include "quality.h"
+#include "surgery.h"
 #include "topology.h"
 
 #include <vcg/complex/algorithms/clean.h>
@@ -143,6 +144,36 @@ bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target) {
   return GapAt(a, b, target.Query((a + b) / 2));
 }
 
+namespace {
+
+// The connected pieces of cut's faces (through shared edges, its face-face adjacency up to
+// date): per face its piece (-1 where deleted), per piece its area on the source.
+struct FacePieces {
+  std::vector<int> of;
+  std::vector<double> area;
+
+  explicit FacePieces(const Mesh &cut) : of(cut.face.size(), -1) {
+    std::vector<int> stack;
+    for (std::size_t seed = 0; seed < cut.face.size(); ++seed) {
+      if (cut.face[seed].IsD() || of[seed] >= 0) continue;
+      of[seed] = int(area.size());
+      area.push_back(0);
+      stack.push_back(int(seed));
+      while (!stack.empty()) {
+        const Face &f = cut.face[stack.back()];
+        stack.pop_back();
+        area.back() += vcg::DoubleArea(f) / 2;
+        for (int e = 0; e < 3; ++e) {
+          const int g = int(vcg::tri::Index(cut, f.cFFp(e)));
+          if (!cut.face[g].IsD() && of[g] < 0) of[g] = of[seed], stack.push_back(g);
+        }
+      }
+    }
+  }
+};
+
+} // namespace
+
 int OpenTears(Mesh &cut, const ClosestPoint &target, double limit) {
   Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
   std::vector<char> torn(cut.face.size(), 0);
@@ -174,11 +205,28 @@ int OpenTears(Mesh &cut, const ClosestPoint &target, double limit) {
     if (rim) pieces.push_back(std::move(piece));
   }
   int removed = 0;
-  for (const std::vector<int> &piece : pieces) {
+  auto same = [&](const Topology &t) {
+    return t.components == before.components && t.boundaryLoops == before.boundaryLoops &&
+           t.eulerCharacteristic == before.eulerCharacteristic;
+  };
+  const FacePieces whole(cut);
+  for (std::vector<int> piece : pieces) {
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);  // as before the pieces undone
+    std::vector<int> beside;  // the faces next to the piece (face-face adjacency as before it goes)
+    for (int n : piece)
+      for (int e = 0; e < 3; ++e) beside.push_back(int(vcg::tri::Index(cut, cut.face[n].FFp(e))));
     for (int n : piece) vcg::tri::Allocator<Mesh>::DeleteFace(cut, cut.face[n]);
-    const Topology after = MeasureTopology(cut);
-    if (after.components == before.components && after.boundaryLoops == before.boundaryLoops &&
-        after.eulerCharacteristic == before.eulerCharacteristic) {
+    if (!same(MeasureTopology(cut))) {
+      // The islands it cuts off go with it.
+      const FacePieces left(cut);
+      const double island = kIslandShare * whole.area[whole.of[piece.front()]];
+      std::vector<char> flap(left.area.size(), 0);
+      for (int n : beside)
+        if (!cut.face[n].IsD() && left.area[left.of[n]] < island) flap[left.of[n]] = 1;
+      for (std::size_t n = 0; n < cut.face.size(); ++n)
+        if (!cut.face[n].IsD() && flap[left.of[n]]) piece.push_back(int(n)), vcg::tri::Allocator<Mesh>::DeleteFace(cut, cut.face[n]);
+    }
+    if (same(MeasureTopology(cut))) {
       removed += int(piece.size());
       continue;
     }

@@ -25,7 +25,6 @@ namespace eulermap {
 
 namespace {
 
-constexpr double kIslandShare = 0.02;  // a piece with less of its component's area is an island
 constexpr double kOffLevelCells = 0.25;  // a tracked point this far off f = 0 has lost its level set
 // A tracked edge whose chord's midpoint lies this far outside per unit of its length is not
 // split. Below refine_stretched.h's kGapSag (the right-angled concave corner's 0.354): an

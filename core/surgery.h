@@ -104,6 +104,7 @@
 namespace eulermap {
 
 constexpr int kAddedPerVertex = 4;  // the refinement's budget
+constexpr double kIslandShare = 0.02;  // a piece of the cut with less of its component's area (on the source) is an island
 
 class Surgery {
  public:

@@ -137,23 +137,24 @@ void AddQuad(Mesh &m, const Point3 &a, const Point3 &b, const Point3 &c, const P
   vcg::tri::Allocator<Mesh>::AddFace(m, &v[0], &v[2], &v[3]);
 }
 
-// Source: a 4 x 2 grid. Target: the ground z = 0 (facing up) with a trench 5 deep between
-// x = 1 and x = 3, along y from 0 to `trench`; where the trench ends (trench 1), the ground
-// bridges it. The grid's bottom row maps onto the ground with x -> 0, 0.5, 1, 3, 4, the
-// rows above onto the bridge as they are (or, without one, like the bottom row): the faces
-// over the trench are a tear.
+// Source: a `columns` x 2 grid (4 or more). Target: the ground z = 0 (facing up) with a
+// trench 5 deep between x = 1 and x = 3, along y from 0 to `trench`; where the trench ends
+// (trench 1), the ground bridges it. The grid's bottom row maps onto the ground with x -> 0,
+// 0.5, 1, 3, 4, 5, ..., the rows above onto the bridge as they are (or, without one, like
+// the bottom row): the faces over the trench are a tear.
 struct GapCase {
   Mesh cut, target;
-  explicit GapCase(double trench) {
-    MakeGrid(cut, 4, 2);
+  explicit GapCase(double trench, int columns = 4) {
+    MakeGrid(cut, columns, 2);
     Handle image = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<Point3>(cut, "TargetPosition");
-    const double gapX[5] = {0, 0.5, 1, 3, 4};
+    const double gapX[3] = {0, 0.5, 1};
     for (int j = 0; j <= 2; ++j)
-      for (int i = 0; i <= 4; ++i) image[i + 5 * j] = Point3(j >= trench ? i : gapX[i], j, 0);
+      for (int i = 0; i <= columns; ++i)
+        image[i + (columns + 1) * j] = Point3(j >= trench || i > 2 ? i : gapX[i], j, 0);
     auto ground = [&](double x0, double y0, double x1, double y1, double z) {
       AddQuad(target, Point3(x0, y0, z), Point3(x1, y0, z), Point3(x1, y1, z), Point3(x0, y1, z));
     };
-    ground(0, 0, 1, 2, 0), ground(3, 0, 4, 2, 0), ground(1, 0, 3, trench, -5);
+    ground(0, 0, 1, 2, 0), ground(3, 0, columns, 2, 0), ground(1, 0, 3, trench, -5);
     if (trench < 2) ground(1, trench, 3, 2, 0);
     AddQuad(target, Point3(1, 0, -5), Point3(1, trench, -5), Point3(1, trench, 0), Point3(1, 0, 0));  // facing +x
     AddQuad(target, Point3(3, 0, 0), Point3(3, trench, 0), Point3(3, trench, -5), Point3(3, 0, -5));  // facing -x
@@ -188,6 +189,23 @@ TEST(OpenTears, ATearThatWouldCutOffAPieceStays) {
   EXPECT_EQ(OpenTears(c.cut, onTarget, 1.5), 0);
   EXPECT_EQ(c.cut.fn, 16);
   EXPECT_EQ(MeasureTopology(c.cut).components, 1);
+}
+
+// Where the piece the tear would cut off is an island (under kIslandShare of the area: here
+// the 2 x 2 squares left of the trench, of 2 x 204), it goes with the tear: the hole grows
+// over both and the cut stays one disc with one rim.
+TEST(OpenTears, AnIslandATearCutsOffGoesWithIt) {
+  GapCase c(2, 204);
+  const Topology before = MeasureTopology(c.cut);
+  ClosestPoint onTarget(c.target);
+  EXPECT_EQ(OpenTears(c.cut, onTarget, 1.5), 4 + 8);  // the column over the trench, the island
+  EXPECT_EQ(c.cut.fn, 2 * 204 * 2 - 12);
+  const Topology after = MeasureTopology(c.cut);
+  EXPECT_EQ(after.components, before.components);
+  EXPECT_EQ(after.boundaryLoops, before.boundaryLoops);
+  EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
+  for (const Vertex &v : c.cut.vert)
+    if (!v.IsD()) EXPECT_GE(v.cP().X(), 3);  // nothing left of the trench
 }
 
 } // namespace
