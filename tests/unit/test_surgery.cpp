@@ -124,8 +124,13 @@ TEST(Surgery, EventWaitsForTheTrackedSurfaceComingNearer) {
   EXPECT_EQ(t.eulerCharacteristic, 0);
 }
 
-// A neck pinching: the band of faces crossing the plane normal to the neck goes.
-TEST(Surgery, PinchingNeckLosesABand) {
+// A torus whose handle is lost on its ring, 4 cells from the centre, where the neck runs
+// along y, under a quadric f with the given curvature signs: the event's outcome and the cut.
+struct LostHandle {
+  EventSurgery outcome;
+  Topology cut;
+};
+LostHandle LoseTorusHandle(const Point3 &curvatures) {
   const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
   const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
   Mesh torus;
@@ -133,45 +138,36 @@ TEST(Surgery, PinchingNeckLosesABand) {
   std::vector<Point3> points;
   for (const Vertex &v : torus.vert) points.push_back(v.cP());
   Tracker tracker(points, std::vector<double>(points.size(), 0.0));
-  const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
-  const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(1, -1, 1));
+  const vcg::Point3i node(11, 7, 7);
+  const ScalarField f = Quadric(g, g.Node(11, 7, 7), curvatures);
   Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned}, false);
   surgery.Step(0, {}, f, f, tracker);
-  ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
   Mesh cut;
   std::vector<EventSurgery> outcomes;
   surgery.Build(torus, tracker.Points(), cut, outcomes);
-  const Topology t = MeasureTopology(cut);  // a cylinder
-  EXPECT_EQ(t.components, 1);
-  EXPECT_EQ(t.boundaryLoops, 2);
-  EXPECT_EQ(t.eulerCharacteristic, 0);
+  return {surgery.Outcomes()[0], MeasureTopology(cut)};
 }
 
-// A handle's band never parts the surface: where f's Hessian points along the tube (the
+// A neck pinching: the band of faces crossing the plane normal to the neck goes.
+TEST(Surgery, PinchingNeckLosesABand) {
+  const LostHandle lost = LoseTorusHandle(Point3(1, -1, 1));  // odd along y, the neck
+  ASSERT_EQ(lost.outcome.outcome, EventCut::Cut);
+  EXPECT_EQ(lost.cut.components, 1);  // a cylinder
+  EXPECT_EQ(lost.cut.boundaryLoops, 2);
+  EXPECT_EQ(lost.cut.eulerCharacteristic, 0);
+}
+
+// A handle's band never parts the surface: where f's Hessian points across the tube (the
 // plane normal to it cuts off the tube's outer side, as the band round a cup's wall did at
 // its handle's root, cup -> ring1 at 64 cells), the band goes along the principal direction
 // that leaves the torus one cylinder.
 TEST(Surgery, AHandlesBandNeverPartsTheSurface) {
-  const double A[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-  const Grid g = LinearField(A, Point3(0, 0, 0)).grid;
-  Mesh torus;
-  MakeTorus(torus, g.Node(7, 7, 7), 0.55, 0.2);
-  std::vector<Point3> points;
-  for (const Vertex &v : torus.vert) points.push_back(v.cP());
-  Tracker tracker(points, std::vector<double>(points.size(), 0.0));
-  const vcg::Point3i node(11, 7, 7);  // on the ring, 4 cells from the centre: the neck runs along y
-  const ScalarField f = Quadric(g, g.Node(11, 7, 7), Point3(-1, 1, 1));  // odd along x, across the neck
-  Surgery surgery(torus, g.h, g.h, {EventAt(g, node, TopologyEventKind::HandleLost)}, {EventCut::Planned}, false);
-  surgery.Step(0, {}, f, f, tracker);
-  ASSERT_EQ(surgery.Outcomes()[0].outcome, EventCut::Cut);
-  EXPECT_TRUE(surgery.Outcomes()[0].axisTurned);
-  Mesh cut;
-  std::vector<EventSurgery> outcomes;
-  surgery.Build(torus, tracker.Points(), cut, outcomes);
-  const Topology t = MeasureTopology(cut);  // a cylinder
-  EXPECT_EQ(t.components, 1);
-  EXPECT_EQ(t.boundaryLoops, 2);
-  EXPECT_EQ(t.eulerCharacteristic, 0);
+  const LostHandle lost = LoseTorusHandle(Point3(-1, 1, 1));  // odd along x, across the neck
+  ASSERT_EQ(lost.outcome.outcome, EventCut::Cut);
+  EXPECT_TRUE(lost.outcome.axisTurned);
+  EXPECT_EQ(lost.cut.components, 1);  // a cylinder
+  EXPECT_EQ(lost.cut.boundaryLoops, 2);
+  EXPECT_EQ(lost.cut.eulerCharacteristic, 0);
 }
 
 // Flat fronts meeting across a whole section (the rails of chair -> chair_rails growing from
