@@ -211,26 +211,29 @@ int OpenTears(Mesh &cut, const ClosestPoint &target, double limit) {
   };
   const FacePieces whole(cut);
   for (std::vector<int> piece : pieces) {
-    vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);  // as before the pieces undone
     std::vector<int> beside;  // the faces next to the piece (face-face adjacency as before it goes)
     for (int n : piece)
       for (int e = 0; e < 3; ++e) beside.push_back(int(vcg::tri::Index(cut, cut.face[n].FFp(e))));
     for (int n : piece) vcg::tri::Allocator<Mesh>::DeleteFace(cut, cut.face[n]);
-    if (!same(MeasureTopology(cut))) {
+    Topology after = MeasureTopology(cut);
+    if (!same(after)) {
       // The islands it cuts off go with it.
       const FacePieces left(cut);
       const double island = kIslandShare * whole.area[whole.of[piece.front()]];
       std::vector<char> flap(left.area.size(), 0);
       for (int n : beside)
         if (!cut.face[n].IsD() && left.area[left.of[n]] < island) flap[left.of[n]] = 1;
+      const std::size_t alone = piece.size();
       for (std::size_t n = 0; n < cut.face.size(); ++n)
         if (!cut.face[n].IsD() && flap[left.of[n]]) piece.push_back(int(n)), vcg::tri::Allocator<Mesh>::DeleteFace(cut, cut.face[n]);
+      if (piece.size() > alone) after = MeasureTopology(cut);
     }
-    if (same(MeasureTopology(cut))) {
+    if (same(after)) {
       removed += int(piece.size());
       continue;
     }
     for (int n : piece) cut.face[n].ClearD(), ++cut.fn;  // undone: the piece would change the cut
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(cut);         // adjacency with its faces back, for the next piece's
   }
   if (removed > 0) {
     vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(cut);
