@@ -144,6 +144,93 @@ int OrientOutward(Mesh &mesh) {
   return turned;
 }
 
+// A face's height over its longest edge, 2 area / longest edge, below kFlatHeight of the
+// diagonal: below what single-precision coordinates resolve (MeshLab 2020.09 and STL files
+// store floats; a face on three collinear points rounded to floats has a height of 1e-9
+// to 1e-8 of the diagonal, a sound face of a 10^6-face scan one of 1e-4 or so).
+constexpr double kFlatHeight = 1e-6;
+
+struct FlatFaces {
+  int welded = 0, flipped = 0, removed = 0, orphans = 0;  // faces mended each way; removed, and vertices only they used
+};
+
+// Step 5 of PrepareMesh: faces whose height is at most `flat` mended where the surface closes
+// round them (each of their edges has exactly one other face), so that it stays closed:
+// corners nearer each other than `flat` are welded (the edge collapses; the face and its
+// neighbour across that edge go), else a corner lies on the opposite, longest edge, which is
+// flipped (the face and its neighbour across it become the two faces on the quad's other
+// diagonal). Removing such a face would open a hole that changes the surface's topology, and
+// so the cut a continuous map needs: marching cubes makes them where the surface passes
+// through a grid node (the spectacles of tests/support/shapes.h at every grid; 4 faces of a
+// trefoil knot's tube at 64 cells, 28 of two merged balls at 128). Faces of zero area beside
+// a border or a non-manifold edge, or whose flip would make an edge twice, are removed.
+FlatFaces MendFlatFaces(Mesh &mesh, double flat) {
+  auto isFlat = [flat](const Face &f) {  // twice the area over the longest edge, at most `flat`
+    const double longest = std::max({vcg::Distance(f.cP(0), f.cP(1)), vcg::Distance(f.cP(1), f.cP(2)),
+                                      vcg::Distance(f.cP(2), f.cP(0))});
+    return ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() <= flat * longest;
+  };
+  auto index = [&](const Face &f, int c) { return int(vcg::tri::Index(mesh, f.cV(c))); };
+  FlatFaces done;
+  // A round welds or flips each flat face whose neighbours no other mend of the round changes;
+  // a flip can leave a flat face (the neighbour was flat too), so rounds go on while they mend.
+  constexpr int kRounds = 8;
+  for (int round = 0; round < kRounds; ++round) {
+    const EdgeFaces edgeFaces(mesh);
+    auto closedRound = [&](const Face &f) {
+      for (int e = 0; e < 3; ++e)
+        if (edgeFaces.Around(index(f, e), index(f, (e + 1) % 3)).size() != 2) return false;
+      return true;
+    };
+    UnionFind into(int(mesh.vert.size()));
+    std::vector<char> touched(mesh.face.size(), 0);
+    int welds = 0, flips = 0;
+    for (std::size_t n = 0; n < mesh.face.size(); ++n) {
+      Face &f = mesh.face[n];
+      if (f.IsD() || touched[n] || !isFlat(f) || !closedRound(f)) continue;
+      int shortest = 0, longest = 0;  // edges e = (e, e + 1)
+      for (int e = 1; e < 3; ++e) {
+        const double length = vcg::Distance(f.cP(e), f.cP((e + 1) % 3));
+        if (length < vcg::Distance(f.cP(shortest), f.cP((shortest + 1) % 3))) shortest = e;
+        if (length > vcg::Distance(f.cP(longest), f.cP((longest + 1) % 3))) longest = e;
+      }
+      if (vcg::Distance(f.cP(shortest), f.cP((shortest + 1) % 3)) <= flat) {
+        into.Merge(index(f, (shortest + 1) % 3), index(f, shortest));
+        touched[n] = 1, ++welds;
+        continue;
+      }
+      // f = (a, b, c) with c on the edge a b; g = (b, a, d) across it: (a, d, c) and (d, b, c).
+      const int a = index(f, longest), b = index(f, (longest + 1) % 3);
+      const EdgeFaces::Faces across = edgeFaces.Around(a, b);
+      const int g = across[0] == int(n) ? across[1] : across[0];
+      if (touched[g]) continue;
+      Face &h = mesh.face[g];
+      int d = 0;
+      while (h.cV(d) == f.cV(longest) || h.cV(d) == f.cV((longest + 1) % 3)) ++d;
+      const int c = (longest + 2) % 3;
+      if (h.V(d) == f.V(c) || edgeFaces.Around(index(f, c), index(h, d)).size() > 0) continue;  // removed below
+      Vertex *va = f.V(longest), *vb = f.V((longest + 1) % 3), *vc = f.V(c), *vd = h.V(d);
+      const auto ta = f.WT(longest), tb = f.WT((longest + 1) % 3), tc = f.WT(c), td = h.WT(d);
+      f.V(0) = va, f.V(1) = vd, f.V(2) = vc, f.WT(0) = ta, f.WT(1) = td, f.WT(2) = tc;
+      h.V(0) = vd, h.V(1) = vb, h.V(2) = vc, h.WT(0) = td, h.WT(1) = tb, h.WT(2) = tc;
+      touched[n] = touched[g] = 1, ++flips;
+    }
+    if (welds > 0) {  // each welded corner into its set's first; faces left repeating a corner go
+      for (Face &f : mesh.face)
+        if (!f.IsD())
+          for (int c = 0; c < 3; ++c) f.V(c) = &mesh.vert[into.Find(index(f, c))];
+      int repeating = 0;
+      RemoveFacesWhere(mesh, [](const Face &f) { return f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0); },
+                       repeating);
+      vcg::tri::Clean<Mesh>::RemoveDuplicateFace(mesh);
+    }
+    done.welded += welds, done.flipped += flips;
+    if (welds + flips == 0) break;
+  }
+  done.orphans = RemoveFacesWhere(mesh, isFlat, done.removed);
+  return done;
+}
+
 } // namespace
 
 void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &notes) {
@@ -171,28 +258,7 @@ void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &
   const double diag = mesh.bbox.Diag();
   if (!(diag > 0)) throw Error("the " + role + " mesh has no extent: all its vertices lie at one point");
 
-  // 4. A face's height over its longest edge, 2 area / longest edge, below kFlatHeight of the
-  // diagonal: below what single-precision coordinates resolve (MeshLab 2020.09 and STL files
-  // store floats; a face on three collinear points rounded to floats has a height of 1e-9
-  // to 1e-8 of the diagonal, a sound face of a 10^6-face scan one of 1e-4 or so).
-  constexpr double kFlatHeight = 1e-6;
-  int zeroArea = 0;
-  const int orphans = RemoveFacesWhere(
-      mesh,
-      [&](const Face &f) {
-        const double longest = std::max({vcg::Distance(f.cP(0), f.cP(1)), vcg::Distance(f.cP(1), f.cP(2)),
-                                          vcg::Distance(f.cP(2), f.cP(0))});
-        return ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() <= kFlatHeight * diag * longest;
-      },
-      zeroArea);
-  if (mesh.fn == 0)
-    throw Error("every face of the " + role + " mesh has zero area (its vertices lie on lines or points): the " +
-                "map needs a surface");
-  Note(notes, role, zeroArea, "faces of zero area removed" +
-                                   (orphans > 0 ? " (with " + std::to_string(orphans) + " vertices only they used)"
-                                                : std::string()));
-
-  // 5.
+  // 4.
   const int welded = Weld(mesh);
   Note(notes, role, welded, "vertices at the same place as another welded");
   if (welded > 0) {
@@ -201,6 +267,18 @@ void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &
                      degenerate);
     Note(notes, role, Clean::RemoveDuplicateFace(mesh) + degenerate, "faces made twice by the welding removed");
   }
+
+  // 5.
+  const FlatFaces flat = MendFlatFaces(mesh, kFlatHeight * diag);
+  if (mesh.fn == 0)
+    throw Error("every face of the " + role + " mesh has zero area (its vertices lie on lines or points): the " +
+                "map needs a surface");
+  Note(notes, role, flat.welded + flat.flipped,
+       "faces of zero area mended where the surface closes round them (" + std::to_string(flat.welded) +
+           " by welding corners at one place, " + std::to_string(flat.flipped) + " by flipping the edge a corner lies on)");
+  Note(notes, role, flat.removed, "faces of zero area removed" +
+                                      (flat.orphans > 0 ? " (with " + std::to_string(flat.orphans) + " vertices only they used)"
+                                                        : std::string()));
 
   // 6.
   Note(notes, role, OrientCoherently(mesh), "faces turned to agree with their neighbours");

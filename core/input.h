@@ -19,12 +19,14 @@ namespace eulermap {
 //        2. vertices no face uses removed (a stray point would stretch the grid);
 //        3. refused (Error) if a vertex left has a NaN or Inf coordinate, or the mesh has
 //           no faces or no extent;
-//        4. faces of zero area removed (their height below 1e-6 of the bounding-box
-//           diagonal: collinear corners, up to single-precision rounding), with the vertices
-//           only they used; refused if none is left;
-//        5. welded: vertices at exactly the same position with the same texture coordinate
+//        4. welded: vertices at exactly the same position with the same texture coordinate
 //           and colour merged into one (triangle soups, as STL files store meshes: every
 //           face its own three vertices), and faces made twice by that removed;
+//        5. faces of zero area (their height below 1e-6 of the bounding-box diagonal:
+//           collinear corners, up to single-precision rounding) mended where the surface
+//           closes round them, so that it stays closed (corners at one place welded, the
+//           edge a corner lies on flipped), removed elsewhere with the vertices only they
+//           used; refused if none is left;
 //        6. oriented: within each part, faces turned to agree with their neighbours across
 //           manifold edges; then each connected part whose signed volume is negative (faces
 //           pointing inward) turned outward, as the signed distance's inside needs.

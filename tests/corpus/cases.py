@@ -340,8 +340,10 @@ def cases(samples_dir):
     for f in sphere.faces[:6]:  # a second vertex at the place of f[0]: a face of exactly zero area
         zx.verts.append(zx.verts[f[0]])
         zx.faces.append((f[0], f[1], len(zx.verts) - 1))
-    add("zero_area_faces_exact", "six extra source faces of exactly zero area (two corners at one place)", zx, ell,
-        Success(repairs=["source: 6 faces of zero area removed"], sane=True))
+    add("zero_area_faces_exact", "six extra source faces of exactly zero area (two corners at one place: welded, "
+        "then each repeats a vertex)", zx, ell,
+        Success(repairs=["source: 6 vertices at the same place as another welded",
+                         "source: 6 faces made twice by the welding removed"], sane=True))
     line = Mesh([(0.1 * i, 0.05 * i, 0) for i in range(12)], [(i, i + 1, i + 2) for i in range(10)])
     add("all_collinear_target", "a target whose vertices all lie on one line (every face zero area)", sphere, line,
         Error(["every face of the target mesh has zero area"]))

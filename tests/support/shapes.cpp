@@ -64,6 +64,25 @@ Sdf Row(int n, double spacing, const std::function<double(const Point3 &, const 
   return Union(parts);
 }
 
+// A tube of radius r round a curve c(u), u in [0, 1], sampled at n segments; closed where c(1) = c(0).
+Sdf Tube(const std::function<Point3(double)> &c, double r, int n = 360) {
+  std::vector<Point3> at(n + 1);
+  for (int i = 0; i <= n; ++i) at[i] = c(double(i) / n);
+  return [at, r](const Point3 &p) {
+    double d = 1e300;
+    for (size_t i = 0; i + 1 < at.size(); ++i) d = std::min(d, Capsule(p, at[i], at[i + 1], r));
+    return d;
+  };
+}
+Point3 TrefoilKnot(double u) {  // (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t) / 4
+  const double t = 2 * M_PI * u;
+  return Point3(std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)) * 0.25;
+}
+Point3 Helix(double u) {  // three turns of radius 0.4, 1 high
+  const double t = 6 * M_PI * u;
+  return Point3(0.4 * std::cos(t), 0.4 * std::sin(t), u - 0.5);
+}
+
 // Furniture: a seat 0.8 square at height 0.45-0.55, legs 0.1 square, a back 0.8 wide.
 constexpr double kLeg = 0.1, kHalf = 0.4;
 std::vector<Sdf> Seat(double top) {
@@ -249,6 +268,49 @@ std::vector<Made> Catalogue() {
     round.push_back([a](const Point3 &p) { return Capsule(p, Point3(0, 0, 0.12), Point3(0.4 * std::cos(a), 0.4 * std::sin(a), 0.04), 0.045); });
   }
   all.push_back({{"round_table", 1, 0}, Union(round), Box3(Point3(-0.6, -0.6, -0.1), Point3(0.6, 0.6, 0.85))});
+  // Shapes made in session 35, after every rule above, to check the pipeline on shapes it was not tuned on.
+  std::vector<Sdf> wheel = {[](const Point3 &p) { return Torus(p, Point3(0, 0, 0), 0.7, 0.08); },
+                            [](const Point3 &p) { return Ball(p, Point3(0, 0, 0), 0.15); }};
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2 * M_PI * k / 5;
+    wheel.push_back([a](const Point3 &p) { return Capsule(p, Point3(0, 0, 0), Point3(0.7 * std::cos(a), 0.7 * std::sin(a), 0), 0.05); });
+  }
+  all.push_back({{"wheel", 1, 5}, Union(wheel), Box3(Point3(-0.85, -0.85, -0.2), Point3(0.85, 0.85, 0.2))});
+  all.push_back({{"trefoil", 1, 1}, Tube(TrefoilKnot, 0.1), Box3(Point3(-0.85, -0.85, -0.4), Point3(0.85, 0.85, 0.4))});
+  all.push_back({{"spring", 1, 0}, Tube(Helix, 0.08), Box3(Point3(-0.55, -0.55, -0.7), Point3(0.55, 0.55, 0.7))});
+  all.push_back({{"link", 2, 2},  // two rings interlocked, 0.1 apart where they pass
+                 Union({[](const Point3 &p) { return Torus(p, Point3(-0.3, 0, 0), 0.45, 0.1); },
+                        [](const Point3 &p) { return Torus(Point3(p.X(), p.Z(), p.Y()), Point3(0.3, 0, 0), 0.45, 0.1); }}),
+                 Box3(Point3(-0.9, -0.6, -0.6), Point3(0.9, 0.6, 0.6))});
+  all.push_back({{"bowl", 1, 0},  // half a spherical shell 0.1 thick, open upwards
+                 [](const Point3 &p) { return std::max({Ball(p, Point3(0, 0, 0.2), 0.7), -Ball(p, Point3(0, 0, 0.2), 0.6), p.Z() - 0.2}); },
+                 Box3(Point3(-0.8, -0.8, -0.6), Point3(0.8, 0.8, 0.3))});
+  all.push_back({{"vase", 1, 0},  // a hollow ball with a narrow neck, walls 0.1 thick
+                 [](const Point3 &p) {
+                   const double body = Ball(p, Point3(0, 0, -0.15), 0.58), neck = std::max(std::hypot(p.X(), p.Y()) - 0.18, std::abs(p.Z() - 0.45) - 0.3);
+                   const double hollow = Ball(p, Point3(0, 0, -0.15), 0.48), mouth = std::max(std::hypot(p.X(), p.Y()) - 0.08, -0.1 - p.Z());
+                   return std::max(std::min(body, neck), -std::min(hollow, mouth));
+                 },
+                 Box3(Point3(-0.7, -0.7, -0.8), Point3(0.7, 0.7, 0.85))});
+  all.push_back({{"bookcase", 1, 0},  // a box with a back panel and two shelves' pockets open at the front
+                 [](const Point3 &p) {
+                   return std::max({Block(p, Point3(-0.5, -0.2, -0.7), Point3(0.5, 0.2, 0.7)),
+                                    -Block(p, Point3(-0.4, -0.5, 0.05), Point3(0.4, 0.12, 0.6)),
+                                    -Block(p, Point3(-0.4, -0.5, -0.6), Point3(0.4, 0.12, -0.05))});
+                 },
+                 Box3(Point3(-0.6, -0.3, -0.8), Point3(0.6, 0.3, 0.8))});
+  all.push_back({{"teapot", 1, 1},  // a body, a handle, a spout and a knob on the lid
+                 Union({[](const Point3 &p) { return Ellipsoid(p, Point3(0.5, 0.5, 0.38)); },
+                        [](const Point3 &p) { return std::max(std::hypot(std::hypot(p.X() - 0.45, p.Z()) - 0.25, p.Y()) - 0.06, 0.4 - p.X()); },
+                        [](const Point3 &p) { return Capsule(p, Point3(-0.3, 0, -0.05), Point3(-0.8, 0, 0.3), 0.06); },
+                        [](const Point3 &p) { return Ball(p, Point3(0, 0, 0.42), 0.08); }}),
+                 Box3(Point3(-0.95, -0.6, -0.5), Point3(0.85, 0.6, 0.6))});
+  all.push_back({{"hare", 1, 0},  // a body, a head and two long thin ears
+                 Union({[](const Point3 &p) { return Ellipsoid(p, Point3(0.45, 0.3, 0.3)); },
+                        [](const Point3 &p) { return Ball(p, Point3(0.45, 0, 0.3), 0.18); },
+                        [](const Point3 &p) { return Capsule(p, Point3(0.45, -0.1, 0.4), Point3(0.4, -0.2, 0.9), 0.045); },
+                        [](const Point3 &p) { return Capsule(p, Point3(0.45, 0.1, 0.4), Point3(0.4, 0.2, 0.9), 0.045); }}),
+                 Box3(Point3(-0.6, -0.45, -0.45), Point3(0.75, 0.45, 1.0))});
   return all;
 }
 

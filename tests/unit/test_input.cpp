@@ -3,6 +3,7 @@
 // sound (the memory budget: test_memory).
 #include "core/input.h"
 #include "core/pipeline.h"
+#include "core/topology.h"
 #include "tests/support/meshes.h"
 
 #include <vcg/complex/algorithms/clean.h>
@@ -59,6 +60,22 @@ bool Says(const std::vector<std::string> &notes, const std::string &part) {
   return false;
 }
 
+// A closed sphere whose face (a, b, c) is split at m on its edge a b into (a, m, c) and
+// (m, b, c), with the face (a, b, m) of zero area closing it: a corner on the opposite edge
+// where m lies inside a b, corners at one place where m lies at a.
+void AddFlatFace(Mesh &m, double along) {
+  std::size_t corner[3];
+  for (int c = 0; c < 3; ++c) corner[c] = vcg::tri::Index(m, m.face[0].cV(c));
+  vcg::tri::Allocator<Mesh>::DeleteFace(m, m.face[0]);
+  vcg::tri::Allocator<Mesh>::AddVertices(m, 1);  // may move the vertices: pointers taken after it
+  Vertex *a = &m.vert[corner[0]], *b = &m.vert[corner[1]], *c = &m.vert[corner[2]], *mid = &m.vert.back();
+  mid->P() = a->cP() + (b->cP() - a->cP()) * along;
+  vcg::tri::Allocator<Mesh>::AddFace(m, a, mid, c);
+  vcg::tri::Allocator<Mesh>::AddFace(m, mid, b, c);
+  vcg::tri::Allocator<Mesh>::AddFace(m, a, b, mid);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+}
+
 } // namespace
 
 TEST(Input, CleanMeshIsLeftAsItIs) {
@@ -100,6 +117,32 @@ TEST(Input, RepeatedIndexAndZeroAreaFacesAreRemoved) {
   EXPECT_EQ(MapError(clean, target, Small(), {}, &cleanResult), "");
   EXPECT_EQ(result.report.cutFaces, cleanResult.report.cutFaces);
   EXPECT_EQ(result.report.morphMode, cleanResult.report.morphMode);
+}
+
+TEST(Input, ZeroAreaFacesInAClosedSurfaceAreMendedNotRemoved) {
+  // Removing the face of zero area would leave a hole (a boundary loop): the map would then
+  // need a cut with one loop more, and the surface would not be the one the user gave.
+  for (const double along : {0.37, 1e-9}) {
+    Mesh m;
+    MakeSphere(m, Point3(0, 0, 0), 1, 3);
+    AddFlatFace(m, along);
+    Mesh soup;
+    MakeSoup(m, soup);
+    for (Mesh *mesh : {&m, &soup}) {
+      std::vector<std::string> notes;
+      PrepareMesh(*mesh, "source", notes);
+      const Topology t = MeasureTopology(*mesh);
+      EXPECT_EQ(t.components, 1) << along;
+      EXPECT_EQ(t.boundaryLoops, 0) << along;
+      EXPECT_EQ(t.eulerCharacteristic, 2) << along;
+      EXPECT_TRUE(Says(notes, along > 0.1 ? "1 faces of zero area mended where the surface closes round them (0 by welding "
+                                                "corners at one place, 1 by flipping the edge a corner lies on)"
+                                          : "by welding corners at one place, 0 by flipping"))
+          << (notes.empty() ? "" : notes.back());
+      EXPECT_FALSE(Says(notes, "faces of zero area removed"));
+      for (const Face &f : mesh->face) EXPECT_GT(((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm(), 1e-4);
+    }
+  }
 }
 
 TEST(Input, NonFiniteCoordinatesAreRefusedUnlessNoFaceUsesThem) {
