@@ -80,33 +80,52 @@ template <class Visit> void ForNeighbours(const Grid &g, std::size_t n, bool fac
       }
 }
 
-// The widest path from the outside (the nodes not in `inside` and beyond the grid,
-// 26-connected as zero_set_topology.h's complement): per node that `through` holds (nodes of
-// `inside`), the most over 26-paths from the outside through such nodes of the least
-// `value` along them; -infinity where no path reaches (and off `through`).
-std::vector<double> WidestFromOutside(const Grid &g, const std::vector<char> &inside, const std::vector<char> &through,
-                                      const std::vector<double> &value) {
-  const int nx = g.dims.X(), ny = g.dims.Y(), nz = g.dims.Z();
-  std::vector<double> widest(inside.size(), -kUnreached);
+// Whether node n lies on the grid's border (beyond which is outside).
+bool OnGridBorder(const Grid &g, std::size_t n) {
+  const vcg::Point3i p = g.Coordinates(n);
+  return std::min({p.X(), p.Y(), p.Z(), g.dims.X() - 1 - p.X(), g.dims.Y() - 1 - p.Y(), g.dims.Z() - 1 - p.Z()}) == 0;
+}
+
+// The length of the step between neighbouring nodes a and b: h, sqrt 2 h or sqrt 3 h.
+double StepLength(const Grid &g, std::size_t a, std::size_t b) {
+  const vcg::Point3i d = g.Coordinates(a) - g.Coordinates(b);
+  return g.h * std::sqrt(double(d.X() * d.X() + d.Y() * d.Y() + d.Z() * d.Z()));
+}
+
+// The widest paths from the nodes `start` holds: per node that `through` holds, the most over
+// paths from a start node through such nodes (over the 6 face neighbours where facesOnly,
+// else all 26) of the least `value` along them; -infinity where no path reaches (and off
+// `through`).
+std::vector<double> Widest(const Grid &g, const std::vector<char> &start, bool facesOnly, const std::vector<char> &through,
+                           const std::vector<double> &value) {
+  std::vector<double> widest(through.size(), -kUnreached);
   std::priority_queue<std::pair<double, std::size_t>> queue;  // the widest first
-  for (std::size_t n = 0; n < inside.size(); ++n) {
-    if (!through[n]) continue;
-    const vcg::Point3i p = g.Coordinates(n);
-    bool byOutside = std::min({p.X(), p.Y(), p.Z(), nx - 1 - p.X(), ny - 1 - p.Y(), nz - 1 - p.Z()}) == 0;  // the grid's border is outside
-    ForNeighbours(g, n, false, [&](std::size_t q) { byOutside = byOutside || !inside[q]; });
-    if (byOutside) widest[n] = value[n], queue.push({value[n], n});
-  }
+  for (std::size_t n = 0; n < through.size(); ++n)
+    if (through[n] && start[n]) widest[n] = value[n], queue.push({value[n], n});
   while (!queue.empty()) {
     const auto [w, n] = queue.top();
     queue.pop();
     if (w < widest[n]) continue;
-    ForNeighbours(g, n, false, [&, w = w](std::size_t q) {
+    ForNeighbours(g, n, facesOnly, [&, w = w](std::size_t q) {
       if (!through[q]) return;
       const double least = std::min(w, value[q]);
       if (least > widest[q]) widest[q] = least, queue.push({least, q});
     });
   }
   return widest;
+}
+
+// Widest from the outside (the nodes not in `inside` and beyond the grid, 26-connected as
+// zero_set_topology.h's complement), through nodes of `inside`.
+std::vector<double> WidestFromOutside(const Grid &g, const std::vector<char> &inside, const std::vector<char> &through,
+                                      const std::vector<double> &value) {
+  std::vector<char> start(inside.size(), 0);
+  for (std::size_t n = 0; n < inside.size(); ++n) {
+    if (!through[n]) continue;
+    start[n] = OnGridBorder(g, n);
+    ForNeighbours(g, n, false, [&](std::size_t q) { start[n] = start[n] || !inside[q]; });
+  }
+  return Widest(g, start, false, through, value);
 }
 
 // Whether leaving in the order of the distance to the kept set, the farthest first, would
@@ -197,6 +216,66 @@ std::vector<double> PistonOrder(const Grid &g, const std::vector<char> &inside, 
   return order;
 }
 
+// The carve's order from the outside: flooded over the 26 neighbours (the outside's
+// connectivity in zero_set_topology.h), tau(n) = max(r(n), tau(m) + (1 - tau(m)) |n - m| /
+// (2 (|n - m| + d1(n)))) for the neighbour m it is reached from (r = c / (c + d1)): every node
+// leaves after a neighbour on a path from the outside, so no cavity is born; where r does not
+// rise inward (behind a neck) the flood goes on towards the kept set at half the pace r has
+// along a straight way in. Nodes `carved` holds only; the rest +infinity.
+std::vector<double> CarveFlood(const Grid &g, const std::vector<char> &carved, const std::vector<double> &toKept,
+                               const std::vector<double> &fromOutside) {
+  const std::size_t count = carved.size();
+  auto ratio = [&](std::size_t n) { return fromOutside[n] / (fromOutside[n] + toKept[n]); };
+  std::vector<double> tau(count, kUnreached);
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::size_t n = 0; n < count; ++n) {
+    if (!carved[n]) continue;
+    bool byOutside = OnGridBorder(g, n);
+    ForNeighbours(g, n, false, [&](std::size_t q) { byOutside = byOutside || fromOutside[q] == 0; });
+    if (byOutside) tau[n] = ratio(n), queue.push({tau[n], n});
+  }
+  while (!queue.empty()) {
+    const auto [t, n] = queue.top();
+    queue.pop();
+    if (t > tau[n]) continue;
+    ForNeighbours(g, n, false, [&, t = t](std::size_t q) {
+      if (!carved[q]) return;
+      const double step = StepLength(g, n, q);
+      const double through = std::max(ratio(q), t + (1 - t) * step / (2 * (step + toKept[q])));
+      if (through < tau[q]) tau[q] = through, queue.push({through, q});
+    });
+  }
+  return tau;
+}
+
+// The carve (grow then withdraw where the farthest-first order would bear a cavity): per
+// withdrawing node, the u at which it leaves. r = c / (c + d1) (c the way in from the outside,
+// CarveDistance; d1 the distance to the kept set) rises from 0 at the outside to 1 at the kept
+// set along a straight way in. Read node by node it is not closed where the way narrows: a
+// vase's neck lies near the kept set all along (d1 small), so its nodes left after the wide
+// hollow below, which was born as a cavity (sphere -> vase at 64 cells: 62% covered). So it
+// is closed twice: flooded from the outside (CarveFlood: no cavity is born), then from the
+// kept set, the most over 6-paths from it of the least flood time along them, so that no
+// node leaves after every node between it and the kept set (the flood from a cage's six
+// windows meets last at its centre, away from the bars); a peak is cut to the pass that joins
+// it to the kept set, and leaves with it. Withdrawing nodes with both distances finite only;
+// the rest +infinity.
+std::vector<double> CarveOrder(const Grid &g, const std::vector<char> &withdrawing, const std::vector<char> &kept,
+                               const std::vector<double> &toKept, const std::vector<double> &fromOutside) {
+  const std::size_t count = withdrawing.size();
+  std::vector<char> carved(count);
+  for (std::size_t n = 0; n < count; ++n) carved[n] = withdrawing[n] && toKept[n] < kUnreached && fromOutside[n] < kUnreached;
+  const std::vector<double> flood = CarveFlood(g, carved, toKept, fromOutside);
+  std::vector<char> byKept(count, 0);
+  for (std::size_t n = 0; n < count; ++n)
+    if (carved[n]) ForNeighbours(g, n, true, [&](std::size_t q) { byKept[n] = byKept[n] || kept[q]; });
+  std::vector<double> order = Widest(g, byKept, true, carved, flood);
+  for (std::size_t n = 0; n < count; ++n)
+    if (!carved[n] || order[n] == -kUnreached) order[n] = flood[n];  // not joined to the kept set
+  return order;
+}
+
 } // namespace
 
 std::vector<double> DistanceWithin(const Grid &g, const std::vector<char> &inside, const std::vector<char> &seed) {
@@ -269,10 +348,22 @@ GrowShrink::GrowShrink(const ScalarField &f0, const ScalarField &f1) : f0_(f0), 
     if (NearestFirstFoldsAPocket(f0.grid, inside, x0, d0_, fromOutside)) d0_ = PistonOrder(f0.grid, inside, x0, d0_, fromOutside);
   }
   d1_ = DistanceWithin(f0.grid, inside, x1);
-  if (FarthestFirstBearsACavity(f0.grid, inside, x1, d1_)) carve_ = CarveDistance(f0.grid, inside, x1);
   for (std::size_t n = 0; n < count; ++n) {
     if (x1[n] && d0_[n] < kUnreached) l0_ = std::max(l0_, d0_[n]);
     if (x0[n] && d1_[n] < kUnreached) l1_ = std::max(l1_, d1_[n]);
+  }
+  if (FarthestFirstBearsACavity(f0.grid, inside, x1, d1_)) {
+    carve_ = CarveDistance(f0.grid, inside, x1);
+    // Withdrawn's blend u d1 - (1 - u) c, zero at u = c / (c + d1), made zero at the carve's
+    // order tau instead: c and d1 become tau L and (1 - tau) L, L = c + d1.
+    std::vector<char> withdrawing(count);
+    for (std::size_t n = 0; n < count; ++n) withdrawing[n] = inside[n] && !x1[n];
+    const std::vector<double> tau = CarveOrder(f0.grid, withdrawing, x1, d1_, carve_);
+    for (std::size_t n = 0; n < count; ++n)
+      if (tau[n] < kUnreached) {
+        const double length = carve_[n] + d1_[n];
+        carve_[n] = tau[n] * length, d1_[n] = (1 - tau[n]) * length;
+      }
   }
   switch_ = l0_ + l1_ > 0 ? l0_ / (l0_ + l1_) : 0.5;
 }

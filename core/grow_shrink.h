@@ -24,7 +24,9 @@
 // mouth; 64.4% covered at 64 cells). Then the withdrawal comes in from the outside instead:
 // f = min(f1, max(f0, u d1 - (1 - u) c)), u = 1 - s, c the way in from outside G through its
 // nodes outside X1 (CarveDistance); nodes leave in the order of c / (c + d1), after those
-// between them and the outside and before those between them and X1 (mug -> cup: 100%).
+// between them and the outside and before those between them and X1 (mug -> cup: 100%),
+// that order closed where the way in narrows (a vase's neck: grow_shrink.cpp, CarveOrder;
+// sphere -> vase: 62% -> 100%).
 // Where the target fills a pocket of the source, joining the nodes nearest X0 first fills it
 // from its walls inward: the walls' fronts meet along its middle and the tracked surface folds
 // there (a cup onto a mug: 2.82% of the mapped area flipped at 64 cells). Then d0 gives way
@@ -61,6 +63,7 @@ class GrowShrink {
   const ScalarField &f0_, &f1_;
   std::vector<double> d0_, d1_;  // per node; +infinity outside G or where unreached (d0_: the piston's order where it fills a pocket)
   std::vector<double> carve_;    // per node, CarveDistance of G onto X1; empty where d1's order bears no cavity
+                                 // (where not, carve_ and d1_ are tau L and (1 - tau) L, tau the carve's order)
   double l0_ = 0, l1_ = 0, switch_ = 0;
 };
 

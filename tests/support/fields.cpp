@@ -63,6 +63,19 @@ CupScene::CupScene() {
   });
 }
 
+VaseScene::VaseScene() {
+  g.origin = Point3(-0.9, -0.9, -0.9);
+  g.h = 0.04;
+  g.dims = vcg::Point3i(46, 46, 46);
+  f0 = Sampled(g, Ball(Point3(0.05, 0.03, 0.0), 0.78));
+  f1 = Sampled(g, [](const Point3 &p) {
+    const double r = std::hypot(p.X(), p.Y()), body = std::hypot(r, p.Z() + 0.2);
+    const double outer = std::min(body - 0.55, std::max(r - 0.18, std::abs(p.Z() - 0.45) - 0.4));
+    const double hollow = std::min(body - 0.43, std::max(r - 0.09, -p.Z()));
+    return std::max(outer, -hollow);
+  });
+}
+
 VectorField LinearField(const double A[3][3], const Point3 &c) {
   Grid g;
   g.origin = Point3(-1, -1, -1);

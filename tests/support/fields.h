@@ -51,6 +51,15 @@ struct CupScene {
   ScalarField f0, f1;
 };
 
+// On the CupScene's grid: f0 the distance to a ball of radius 0.78 about (0.05, 0.03, 0), f1
+// to a vase inside it (a ball of radius 0.55 about (0, 0, -0.2), hollowed to 0.43, with a neck
+// of radius 0.18 up to z = 0.85, bored to 0.09): a hollow reached through a narrow neck.
+struct VaseScene {
+  VaseScene();
+  Grid g;
+  ScalarField f0, f1;
+};
+
 // The frames k / frames (k = 0 .. frames) of `morph` whose inside set is not one component
 // without cavities, as "t = ...: P parts, C cavities".
 template <class Morph> std::vector<std::string> FramesNotOnePartWithoutCavities(const Morph &morph, int frames) {

@@ -16,6 +16,15 @@
 //   box_tunnel              a cube pierced by a square tunnel                    genus 1
 //   two_balls, snowman      a large and a small ball, apart / overlapping        2 parts / genus 0
 //   armchair                chair with arm rests on posts                        genus 2
+//   pretzel, spectacles, key, hand, star, cage, cup, round_table: made in session 32
+//   wheel                   a rim, a hub and five spokes                         genus 5
+//   trefoil, spring         a tube round a trefoil knot / three turns of a helix genus 1 / 0
+//   link                    two rings interlocked, apart                         2 parts, genus 2
+//   bowl, vase              half a shell open upwards / a hollow ball with a
+//                           narrow neck (hollow targets)                         genus 0
+//   bookcase                a box with two pockets open at the front             genus 0
+//   teapot, hare            a body with a handle, a spout and a knob / a body,
+//                           a head and two thin ears                             genus 1 / 0
 //   NAME_turned             any of them turned a quarter about the x axis (as a file made
 //                           with another axis up comes); NAME_tilted: 40 degrees about x,
 //                           then 25 about y
