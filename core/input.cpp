@@ -183,7 +183,7 @@ FlatFaces MendFlatFaces(Mesh &mesh, double flat) {
       return true;
     };
     UnionFind into(int(mesh.vert.size()));
-    std::vector<char> touched(mesh.face.size(), 0);
+    std::vector<char> touched(mesh.face.size(), 0), joined(mesh.vert.size(), 0);  // joined: ends of an edge a flip made this round
     int welds = 0, flips = 0;
     for (std::size_t n = 0; n < mesh.face.size(); ++n) {
       Face &f = mesh.face[n];
@@ -208,21 +208,25 @@ FlatFaces MendFlatFaces(Mesh &mesh, double flat) {
       int d = 0;
       while (h.cV(d) == f.cV(longest) || h.cV(d) == f.cV((longest + 1) % 3)) ++d;
       const int c = (longest + 2) % 3;
-      if (h.V(d) == f.V(c) || edgeFaces.Around(index(f, c), index(h, d)).size() > 0) continue;  // removed below
+      // An edge c d already there (or made by another flip of this round, which the table
+      // does not hold yet) would be made twice: f waits for the next round, or is removed below.
+      if (h.V(d) == f.V(c) || joined[index(f, c)] || joined[index(h, d)] ||
+          edgeFaces.Around(index(f, c), index(h, d)).size() > 0)
+        continue;
+      joined[index(f, c)] = joined[index(h, d)] = 1;
       Vertex *va = f.V(longest), *vb = f.V((longest + 1) % 3), *vc = f.V(c), *vd = h.V(d);
       const auto ta = f.WT(longest), tb = f.WT((longest + 1) % 3), tc = f.WT(c), td = h.WT(d);
       f.V(0) = va, f.V(1) = vd, f.V(2) = vc, f.WT(0) = ta, f.WT(1) = td, f.WT(2) = tc;
       h.V(0) = vd, h.V(1) = vb, h.V(2) = vc, h.WT(0) = td, h.WT(1) = tb, h.WT(2) = tc;
       touched[n] = touched[g] = 1, ++flips;
     }
-    if (welds > 0) {  // each welded corner into its set's first; faces left repeating a corner go
+    if (welds > 0) {  // each welded corner into its set's first; faces left repeating a corner go, and the corners welded away
       for (Face &f : mesh.face)
         if (!f.IsD())
           for (int c = 0; c < 3; ++c) f.V(c) = &mesh.vert[into.Find(index(f, c))];
-      int repeating = 0;
-      RemoveFacesWhere(mesh, [](const Face &f) { return f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0); },
-                       repeating);
+      vcg::tri::Clean<Mesh>::RemoveDegenerateFace(mesh);
       vcg::tri::Clean<Mesh>::RemoveDuplicateFace(mesh);
+      vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(mesh);
     }
     done.welded += welds, done.flipped += flips;
     if (welds + flips == 0) break;
@@ -262,9 +266,7 @@ void PrepareMesh(Mesh &mesh, const std::string &role, std::vector<std::string> &
   const int welded = Weld(mesh);
   Note(notes, role, welded, "vertices at the same place as another welded");
   if (welded > 0) {
-    int degenerate = 0;
-    RemoveFacesWhere(mesh, [](const Face &f) { return f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0); },
-                     degenerate);
+    const int degenerate = Clean::RemoveDegenerateFace(mesh);
     Note(notes, role, Clean::RemoveDuplicateFace(mesh) + degenerate, "faces made twice by the welding removed");
   }
 
