@@ -149,6 +149,12 @@ int OrientOutward(Mesh &mesh) {
 // store floats; a face on three collinear points rounded to floats has a height of 1e-9
 // to 1e-8 of the diagonal, a sound face of a 10^6-face scan one of 1e-4 or so).
 constexpr double kFlatHeight = 1e-6;
+// A flat face whose shortest edge is below kNeedle of its longest is a needle: two corners
+// at nearly one place, the third far off. Flipping its longest edge only hands the short edge
+// to the next face (stool3 of tests/support/shapes.h at 128 cells: two needles 1.4e-6 long,
+// just over the flatness bound, flipped for 8 rounds, then removed: 2 holes); welding the two
+// corners moves one by under a thousandth of the face.
+constexpr double kNeedle = 1e-3;
 
 struct FlatFaces {
   int welded = 0, flipped = 0, removed = 0, orphans = 0;  // faces mended each way; removed, and vertices only they used
@@ -156,8 +162,9 @@ struct FlatFaces {
 
 // Step 5 of PrepareMesh: faces whose height is at most `flat` mended where the surface closes
 // round them (each of their edges has exactly one other face), so that it stays closed:
-// corners nearer each other than `flat` are welded (the edge collapses; the face and its
-// neighbour across that edge go), else a corner lies on the opposite, longest edge, which is
+// corners nearer each other than `flat`, or than kNeedle of the longest edge, are welded (the
+// edge collapses; the face and its neighbour across that edge go), else a corner lies on the
+// opposite, longest edge, which is
 // flipped (the face and its neighbour across it become the two faces on the quad's other
 // diagonal). Removing such a face would open a hole that changes the surface's topology, and
 // so the cut a continuous map needs: marching cubes makes them where the surface passes
@@ -194,7 +201,8 @@ FlatFaces MendFlatFaces(Mesh &mesh, double flat) {
         if (length < vcg::Distance(f.cP(shortest), f.cP((shortest + 1) % 3))) shortest = e;
         if (length > vcg::Distance(f.cP(longest), f.cP((longest + 1) % 3))) longest = e;
       }
-      if (vcg::Distance(f.cP(shortest), f.cP((shortest + 1) % 3)) <= flat) {
+      if (vcg::Distance(f.cP(shortest), f.cP((shortest + 1) % 3)) <=
+          std::max(flat, kNeedle * vcg::Distance(f.cP(longest), f.cP((longest + 1) % 3)))) {
         into.Merge(index(f, (shortest + 1) % 3), index(f, shortest));
         touched[n] = 1, ++welds;
         continue;

@@ -311,6 +311,45 @@ std::vector<Made> Catalogue() {
                         [](const Point3 &p) { return Capsule(p, Point3(0.45, -0.1, 0.4), Point3(0.4, -0.2, 0.9), 0.045); },
                         [](const Point3 &p) { return Capsule(p, Point3(0.45, 0.1, 0.4), Point3(0.4, 0.2, 0.9), 0.045); }}),
                  Box3(Point3(-0.6, -0.45, -0.45), Point3(0.75, 0.45, 1.0))});
+  // Shapes made in session 36, after every rule above, to check the pipeline on shapes it was not tuned on.
+  std::vector<Sdf> square;  // four rings in a square, each overlapping its two neighbours (and a fifth hole amid them)
+  for (double x : {-0.42, 0.42})
+    for (double y : {-0.42, 0.42}) square.push_back([x, y](const Point3 &p) { return Torus(p, Point3(x, y, 0), 0.45, 0.13); });
+  all.push_back({{"ring_square", 1, 5}, Union(square), Box3(Point3(-1.1, -1.1, -0.25), Point3(1.1, 1.1, 0.25))});
+  all.push_back({{"fat_ring", 1, 1}, [](const Point3 &p) { return Torus(p, Point3(0, 0, 0), 0.45, 0.33); },  // a hole 0.24 across
+                 Box3(Point3(-0.9, -0.9, -0.45), Point3(0.9, 0.9, 0.45))});
+  std::vector<Sdf> four;  // four balls in a square, apart
+  for (double x : {-0.5, 0.5})
+    for (double y : {-0.5, 0.5}) four.push_back([x, y](const Point3 &p) { return Ball(p, Point3(x, y, 0), 0.38); });
+  all.push_back({{"spheres4", 4, 0}, Union(four), Box3(Point3(-1, -1, -0.5), Point3(1, 1, 0.5))});
+  all.push_back({{"peanut", 1, 0},  // two balls fused through a waist
+                 Union({[](const Point3 &p) { return Ball(p, Point3(-0.4, 0, 0), 0.45); },
+                        [](const Point3 &p) { return Ball(p, Point3(0.4, 0, 0), 0.45); }}),
+                 Box3(Point3(-0.95, -0.55, -0.55), Point3(0.95, 0.55, 0.55))});
+  std::vector<Sdf> shelf;  // four posts through three shelves
+  for (double x : {-0.45, 0.37})
+    for (double y : {-0.2, 0.12}) shelf.push_back([x, y](const Point3 &p) { return Block(p, Point3(x, y, 0), Point3(x + 0.08, y + 0.08, 1.2)); });
+  for (double z : {0.15, 0.6, 1.05}) shelf.push_back([z](const Point3 &p) { return Block(p, Point3(-0.45, -0.2, z), Point3(0.45, 0.2, z + 0.06)); });
+  all.push_back({{"shelf", 1, 6}, Union(shelf), Box3(Point3(-0.55, -0.3, -0.1), Point3(0.55, 0.3, 1.3))});
+  std::vector<Sdf> three = {[](const Point3 &p) { return std::max(std::hypot(p.X(), p.Y()) - 0.4, std::abs(p.Z() - 0.65) - 0.05); },
+                            [](const Point3 &p) { return Torus(p, Point3(0, 0, 0.25), 0.3, 0.035); }};
+  for (int k = 0; k < 3; ++k) {  // three splayed legs through a ring
+    const double a = 2 * M_PI * k / 3;
+    three.push_back([a](const Point3 &p) { return Capsule(p, Point3(0.25 * std::cos(a), 0.25 * std::sin(a), 0.62), Point3(0.35 * std::cos(a), 0.35 * std::sin(a), 0.03), 0.045); });
+  }
+  all.push_back({{"stool3", 1, 3}, Union(three), Box3(Point3(-0.5, -0.5, -0.1), Point3(0.5, 0.5, 0.8))});
+  std::vector<Sdf> htable = Seat(0.75);  // a table with an H of stretchers between its legs
+  for (double x : {-kHalf, kHalf - kLeg})
+    htable.push_back([x](const Point3 &p) { return Block(p, Point3(x, -kHalf, 0.2), Point3(x + kLeg, kHalf, 0.28)); });
+  htable.push_back([](const Point3 &p) { return Block(p, Point3(-kHalf, -0.04, 0.2), Point3(kHalf, 0.04, 0.28)); });
+  all.push_back({{"table_h", 1, 3}, Union(htable), Box3(Point3(-0.5, -0.5, -0.1), Point3(0.5, 0.5, 0.85))});
+  std::vector<Sdf> throne = Seat(0.55);  // arm rests and a slatted back
+  AddSlattedBack(throne);
+  for (double x : {-kHalf, kHalf - kLeg}) {
+    throne.push_back([x](const Point3 &p) { return Block(p, Point3(x, -kHalf, 0.5), Point3(x + kLeg, -kHalf + kLeg, 0.85)); });
+    throne.push_back([x](const Point3 &p) { return Block(p, Point3(x, -kHalf, 0.8), Point3(x + kLeg, kHalf, 0.9)); });
+  }
+  all.push_back({{"throne", 1, 5}, Union(throne), furniture});
   return all;
 }
 
