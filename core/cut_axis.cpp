@@ -65,11 +65,14 @@ CutDirection CutAxis(const TopologyEvent &event, const ScalarField &f, const std
   return {ToPoint(v).Normalize(), false};
 }
 
-std::array<Point3, 3> PrincipalDirections(const TopologyEvent &event, const ScalarField &f) {
+std::vector<Point3> BandPlanes(const TopologyEvent &event, const ScalarField &f) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(NodeHessian(f, event.node));
-  std::array<Point3, 3> directions;
-  for (int c = 0; c < 3; ++c) directions[c] = ToPoint(Eigen::Vector3d(eigen.eigenvectors().col(c))).Normalize();
-  return directions;
+  std::vector<Point3> normals;
+  for (int c = 0; c < 3; ++c) normals.push_back(ToPoint(Eigen::Vector3d(eigen.eigenvectors().col(c))).Normalize());
+  for (int x = 0; x <= 1; ++x)  // one of each pair of opposite neighbours of a node among its 26
+    for (int y = x ? -1 : 0; y <= 1; ++y)
+      for (int z = x || y ? -1 : 1; z <= 1; ++z) normals.push_back(Point3(x, y, z).Normalize());
+  return normals;
 }
 
 } // namespace eulermap

@@ -48,9 +48,13 @@ constexpr double kSaddleCells = 2;  // a saddle of V this near the event orients
 // out: the cut's axis (above)
 CutDirection CutAxis(const TopologyEvent &event, const ScalarField &f, const std::vector<Saddle> &saddles);
 
-// The principal directions of f's Hessian at the event's node (unit length, by increasing
-// curvature): the planes a band may take where the axis' own cuts the surface otherwise than
-// the event does (surgery.h, step 2).
-std::array<Point3, 3> PrincipalDirections(const TopologyEvent &event, const ScalarField &f);
+// The normals of the planes a band may take where the axis' own is no band of the event's
+// (surgery.h, step 2), in order: the principal directions of f's Hessian at the event's node
+// (by increasing curvature), then the grid's 13 directions (to a face, an edge and a corner
+// of the cell), unit length. The Hessian, read one cell wide, is the shape of f at a point:
+// where a window fills between thin parts (the three windows under stool3's seat, between
+// two legs and a ring, grown over by a sphere) none of its planes meets the window's rim in
+// one loop, and one of the grid's crosses the window.
+std::vector<Point3> BandPlanes(const TopologyEvent &event, const ScalarField &f);
 
 } // namespace eulermap

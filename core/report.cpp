@@ -145,13 +145,18 @@ std::string Report::ToText() const {
     if (n < surgery.size()) {
       const EventSurgery &s = surgery[n];
       if (s.outcome == EventCut::Cut)
-        o << Format(": cut (axis from %s)%s, %d faces removed, rim length %.4g",
-                    s.axisTurned       ? "another principal direction of f's Hessian: the first axis' band parted the surface otherwise than the event"
+        o << Format(": cut (axis from %s)%s%s, %d faces removed, rim length %.4g",
+                    s.axisTurned       ? "another plane: the first axis' band was a disc or parted the surface otherwise than the event"
                     : s.axisFromSaddle ? "a saddle of V"
                                        : "f's Hessian",
+                    s.narrowed ? " (without the swept gap's faces: with them the cut did otherwise than the event)" : "",
                     s.stepsLate == 0 ? ""
                                      : Format(" at step %d, when the tracked surface reached it", e.step + 1 + s.stepsLate).c_str(),
                     s.facesRemoved, s.rimLength);
+      if (s.outcome == EventCut::Cut && !s.asEvent)
+        o << Format("; the cut does otherwise than its event, before the cleaning: %d loops more and the Euler "
+                    "characteristic %+d (a disc pair's: 2 and -2; a band's: 2 and 0)",
+                    s.loopsAdded, s.eulerChange);
       else if (s.outcome == EventCut::AwayFromSurface)
         o << Format(": not cut, the tracked surface is %.1f cells away (a part no tracked point reaches)", s.distanceCells);
       else if (s.outcome == EventCut::Undone)

@@ -93,7 +93,10 @@ struct EventSurgery {
   EventCut outcome = EventCut::NotACutKind;
   double distanceCells = 0;   // from the event to the nearest tracked triangle, in cells (cut kinds only)
   bool axisFromSaddle = false;  // the cut's axis came from a saddle of V (else from f's Hessian)
-  bool axisTurned = false;      // a band along another principal direction of f's Hessian (surgery.h, step 2)
+  bool axisTurned = false;      // a band along another plane (cut_axis.h, BandPlanes; surgery.h, step 2)
+  bool narrowed = false;        // a disc pair without the swept gap's faces (surgery.h, step 2 (c))
+  bool asEvent = true;          // the cut adds two loops and changes the Euler characteristic as its event does (Cut only)
+  int loopsAdded = 0, eulerChange = 0;  // what it did instead (where not asEvent), before the cleaning
   int facesRemoved = 0;       // faces of the tracked surface removed (Cut only)
   double rimLength = 0;       // length of the boundary left, world units (Cut only)
   int stepsLate = 0;          // steps after the event's own that the tracked surface reached it (Cut only)

@@ -255,23 +255,25 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
       outcome.axisFromSaddle = axis.fromSaddle;
       bool bothSheets = true;
       // The faces cut along an axis: (b), then (a) and (c) joined to them.
-      auto cutAlong = [&](const Point3 &d) {
+      // The faces cut along an axis: (b), then with reach 1 (a) and with reach 2 (c) too, joined to (b).
+      auto cutAlong = [&](const Point3 &d, int reach = 2) {
         std::vector<int> faces = Crossing(event.position, d, shape, position, &bothSheets);
         if (!bothSheets) return faces;
         const std::vector<int> crossing = faces;
-        for (int n : InSphere(event.position, position)) faces.push_back(n);
+        if (reach >= 1)
+          for (int n : InSphere(event.position, position)) faces.push_back(n);
         // (c) where the step closes a gap at x, at the event's own step, the cut grows over
         // the faces that lie where the step swept it (Swept): sheets meeting (discs), or the
         // walls of a hole that closes (a handle lost as a band), those facing the gap. A neck
         // that pinches sweeps nothing in at x, and its band stays as (a) and (b) make it.
-        if (outcome.stepsLate == 0) {
-          const Swept swept(event.node, fCur, fNext);
+        if (reach >= 2 && outcome.stepsLate == 0) {
+          const Swept gap(event.node, fCur, fNext);
           const std::vector<int> grown = Spread(
               faces,
               [&](const Point3 &p) {
-                if (shape == CutShape::Discs) return swept.Touches(p);
+                if (shape == CutShape::Discs) return gap.Touches(p);
                 const Point3 outward = fCur.Gradient(p);
-                return swept.Touches(p, &outward);
+                return gap.Touches(p, &outward);
               },
               position);
           faces.insert(faces.end(), grown.begin(), grown.end());
@@ -282,21 +284,57 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
         return JoinedTo(crossing, faces);
       };
       std::vector<int> faces = cutAlong(axis.axis);
-      // A band parts the surface where a part splits, and a handle's never does: where the
-      // axis' band does otherwise, the band of fewest faces along a principal direction of
-      // f's Hessian that does what the event does. At a handle's root the Hessian read one
+      // The cut does to the surface what the event does to the inside set (islands that Clean
+      // removes left out): two loops more; the Euler characteristic two less for a disc pair
+      // (two discs out) and the same for a band (an annulus out); a part more where one
+      // splits, none elsewhere (a handle's band never parts the surface).
+      // Where the axis' disc pair does otherwise, the pair without the swept gap's faces (c),
+      // where that does: where flat fronts meet across a whole section the gap's faces can
+      // reach other cuts' rims (the H of stretchers under table_h grown from table at 64
+      // cells: 14 756 faces whose removal left the loops and the Euler characteristic as they
+      // were, cut 1/4/-2 where 1/6/-4). Not a band: the lining of a hole that closes across
+      // a whole section is a wall the step sweeps flat, and a band without it leaves the wall
+      // folded (shelf -> sphere inflated at 64 cells, its levels' tunnels: 0.00% -> 7.91%
+      // flipped).
+      // Where the axis' band does otherwise, the band of fewest faces along another plane
+      // (cut_axis.h, BandPlanes) that does; else, of those that part the surface as the event
+      // does and hold a loop (no disc), the fewest. At a handle's root the Hessian read one
       // cell wide may point along the wall the handle leaves (cup -> ring1 at 64 cells: the
       // band ran round the cup's whole wall, rim length 4.64, cut 2/4/-2 where 1/4/-2 was
-      // predicted).
-      const bool splits = event.kind == TopologyEventKind::PartSplit;
-      if (shape == CutShape::Band && !faces.empty() && Parts(faces) != splits) {
-        std::vector<int> fewest;
-        for (const Point3 &d : PrincipalDirections(event, fNext)) {
-          std::vector<int> other = cutAlong(d);
-          if (!other.empty() && Parts(other) == splits && (fewest.empty() || other.size() < fewest.size()))
-            fewest = std::move(other);
+      // predicted); where a window fills between thin parts its planes cut the parts elsewhere
+      // (stool3 -> sphere at 64 cells: holes of 6 faces for two of three windows, cut 1/4/-6
+      // where 1/6/-4).
+      const int splits = event.kind == TopologyEventKind::PartSplit ? 1 : 0;
+      if (bothSheets && !faces.empty() && shape != CutShape::None) {
+        const SurfaceFigures before = Figures({});
+        auto asEvent = [&](const SurfaceFigures &after) {
+          return after.parts - before.parts == splits && after.loops - before.loops == 2 &&
+                 after.euler - before.euler == (shape == CutShape::Discs ? -2 : 0);
+        };
+        auto does = [&](const std::vector<int> &cut, bool exactly) {
+          if (cut.empty()) return false;
+          const SurfaceFigures after = Figures(cut);
+          return exactly ? asEvent(after) : after.parts - before.parts == splits && Euler(cut) <= 0;
+        };
+        if (shape == CutShape::Discs && !does(faces, true))
+          if (std::vector<int> narrower = cutAlong(axis.axis, 1); does(narrower, true))
+            faces = std::move(narrower), outcome.narrowed = true;
+        for (const bool exactly : {true, false}) {
+          if (shape != CutShape::Band || does(faces, exactly)) break;
+          std::vector<int> fewest;
+          for (const Point3 &d : BandPlanes(event, fNext)) {
+            std::vector<int> other = cutAlong(d);
+            if (does(other, exactly) && (fewest.empty() || other.size() < fewest.size())) fewest = std::move(other);
+          }
+          if (!fewest.empty()) {
+            faces = std::move(fewest), outcome.axisTurned = true;
+            break;
+          }
         }
-        if (!fewest.empty()) faces = std::move(fewest), outcome.axisTurned = true;
+        // What the cut kept does, for the log where it does otherwise.
+        const SurfaceFigures after = Figures(faces);
+        outcome.asEvent = asEvent(after);
+        outcome.loopsAdded = after.loops - before.loops, outcome.eulerChange = after.euler - before.euler;
       }
       if (!bothSheets) {
         outcome.outcome = EventCut::OneSheetTracked;
@@ -467,32 +505,86 @@ std::vector<int> Surgery::Crossing(const Point3 &o, const Point3 &d, CutShape sh
   return ConnectedFrom(seed, faces);
 }
 
-bool Surgery::Parts(const std::vector<int> &cut) const {
-  std::vector<char> removed(tris_.size(), 0);
-  for (int n : cut) removed[n] = 1;
-  const EdgeFaces faces = AliveEdges();
+int Surgery::Euler(const std::vector<int> &faces) const {
+  std::vector<int> corners;
+  std::vector<std::pair<int, int>> edges;
+  for (int n : faces)
+    for (int e = 0; e < 3; ++e) {
+      const int a = tris_[n].v[e], b = tris_[n].v[(e + 1) % 3];
+      corners.push_back(a);
+      edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+  auto distinct = [](auto &items) {
+    std::sort(items.begin(), items.end());
+    return int(std::unique(items.begin(), items.end()) - items.begin());
+  };
+  return distinct(corners) - distinct(edges) + int(faces.size());
+}
+
+Surgery::SurfaceFigures Surgery::Figures(const std::vector<int> &cut) const {
+  std::vector<char> kept(tris_.size(), 0);
+  for (int n = 0; n < int(tris_.size()); ++n) kept[n] = tris_[n].state == kAlive;
+  for (int n : cut) kept[n] = 0;
+  EdgeFaces faces(tris_.size());
+  for (int n = 0; n < int(tris_.size()); ++n)
+    if (kept[n])
+      for (int e = 0; e < 3; ++e) faces.Add(tris_[n].v[e], tris_[n].v[(e + 1) % 3], n);
+  // Pieces, and the islands among them: a rim and less than kIslandShare of the component's area.
   UnionFind pieces(int(tris_.size()));
-  std::vector<int> beside;  // the faces left next to the cut
-  for (int n = 0; n < int(tris_.size()); ++n) {
-    const Tri &t = tris_[n];
-    if (t.state != kAlive) continue;
-    for (int e = 0; e < 3; ++e)
-      for (int m : faces.Around(t.v[e], t.v[(e + 1) % 3])) {
-        if (removed[n] && !removed[m]) beside.push_back(m);
-        if (!removed[n] && !removed[m]) pieces.Merge(n, m);
+  std::vector<char> rimmed(tris_.size(), 0);
+  for (int n = 0; n < int(tris_.size()); ++n)
+    if (kept[n])
+      for (int e = 0; e < 3; ++e) {
+        const EdgeFaces::Faces around = faces.Around(tris_[n].v[e], tris_[n].v[(e + 1) % 3]);
+        for (int m : around) pieces.Merge(n, m);
+        if (around.size() == 1 && !tris_[n].border[e]) rimmed[n] = 1;
       }
-  }
-  // The pieces beside the cut that Clean keeps (not islands).
-  std::unordered_map<int, double> area;
-  for (int n : beside) area[pieces.Find(n)];
+  std::unordered_map<int, std::pair<double, bool>> piece;  // per piece: its area on the source, whether it has a rim
+  for (int n = 0; n < int(tris_.size()); ++n)
+    if (kept[n]) {
+      const Tri &t = tris_[n];
+      auto &[area, rim] = piece[pieces.Find(n)];
+      area += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
+      rim = rim || rimmed[n];
+    }
+  auto island = [&](int n) {
+    const auto &[area, rim] = piece.at(pieces.Find(n));
+    return rim && area < kIslandShare * componentArea_[tris_[n].component];
+  };
+  // Counted as Clean leaves them: a corner where the surface touches itself (faces around it in
+  // two fans, joined by no edge) counts once a fan, and rims that touch there as two loops:
+  // V counts fans, and the loops are the boundary edges' cycles, E - V + C of their graph.
+  SurfaceFigures figures;
+  UnionFind fans(3 * int(tris_.size()));  // corner c of face n: 3 n + c, joined across the edges at it
+  UnionFind rims(int(sourcePosition_.size()));
+  std::vector<char> onRim(sourcePosition_.size(), 0);
   for (int n = 0; n < int(tris_.size()); ++n) {
+    if (!kept[n] || island(n)) continue;
     const Tri &t = tris_[n];
-    if (t.state != kAlive || removed[n]) continue;
-    auto it = area.find(pieces.Find(n));
-    if (it != area.end()) it->second += Area(sourcePosition_[t.v[0]], sourcePosition_[t.v[1]], sourcePosition_[t.v[2]]);
+    ++figures.euler;  // F
+    if (pieces.Find(n) == n) ++figures.parts;
+    for (int e = 0; e < 3; ++e) {
+      const int a = t.v[e], b = t.v[(e + 1) % 3];
+      const EdgeFaces::Faces around = faces.Around(a, b);
+      if (around[0] == n) --figures.euler;  // E, each edge once
+      for (int m : around)
+        for (int c = 0; c < 3; ++c) {
+          if (tris_[m].v[c] == a) fans.Merge(3 * n + e, 3 * m + c);
+          if (tris_[m].v[c] == b) fans.Merge(3 * n + (e + 1) % 3, 3 * m + c);
+        }
+      if (around.size() == 1) {
+        ++figures.loops;  // + E of the rims' graph
+        rims.Merge(a, b);
+        onRim[a] = onRim[b] = 1;
+      }
+    }
   }
-  const double island = kIslandShare * componentArea_[tris_[cut.front()].component];
-  return std::count_if(area.begin(), area.end(), [&](const auto &a) { return a.second >= island; }) >= 2;
+  for (int n = 0; n < int(tris_.size()); ++n)
+    if (kept[n] && !island(n))
+      for (int c = 0; c < 3; ++c) figures.euler += fans.Find(3 * n + c) == 3 * n + c;  // V, once a fan
+  for (std::size_t v = 0; v < onRim.size(); ++v)
+    if (onRim[v]) figures.loops += (rims.Find(int(v)) == int(v)) - 1;  // + C - V of the rims' graph
+  return figures;
 }
 
 std::vector<int> Surgery::Spread(const std::vector<int> &seeds, const std::function<bool(const Point3 &)> &near,

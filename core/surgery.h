@@ -173,9 +173,15 @@ class Surgery {
   // bothSheets: set false when a side has no tracked face (Discs).
   std::vector<int> Crossing(const Point3 &x, const Point3 &axis, CutShape shape, const std::vector<Point3> &position,
                             bool *bothSheets) const;
-  // Whether removing the faces `cut` (alive, joined) leaves the faces beside it in two or more
-  // pieces that are not islands (Clean): a band that parts the surface.
-  bool Parts(const std::vector<int> &cut) const;
+  // The alive faces less `cut`, less the islands Clean would remove: their pieces, boundary
+  // loops and Euler characteristic (what a band changes).
+  struct SurfaceFigures {
+    int parts = 0, loops = 0, euler = 0;
+  };
+  SurfaceFigures Figures(const std::vector<int> &cut) const;
+  // The Euler characteristic of the faces (distinct), their edges and corners: 1 for a disc,
+  // 0 for a band round a neck or a handle.
+  int Euler(const std::vector<int> &faces) const;
   // Step 2 (c): the alive faces joined to seeds (not among them) through faces whose corners
   // are all near.
   std::vector<int> Spread(const std::vector<int> &seeds, const std::function<bool(const Point3 &)> &near,
