@@ -254,7 +254,6 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
       const CutDirection axis = CutAxis(event, fNext, saddles);
       outcome.axisFromSaddle = axis.fromSaddle;
       bool bothSheets = true;
-      // The faces cut along an axis: (b), then (a) and (c) joined to them.
       // The faces cut along an axis: (b), then with reach 1 (a) and with reach 2 (c) too, joined to (b).
       auto cutAlong = [&](const Point3 &d, int reach = 2) {
         std::vector<int> faces = Crossing(event.position, d, shape, position, &bothSheets);
