@@ -310,28 +310,30 @@ void Surgery::Step(int k, const std::vector<Saddle> &saddles, const ScalarField 
           return after.parts - before.parts == splits && after.loops - before.loops == 2 &&
                  after.euler - before.euler == (shape == CutShape::Discs ? -2 : 0);
         };
-        auto does = [&](const std::vector<int> &cut, bool exactly) {
-          if (cut.empty()) return false;
-          const SurfaceFigures after = Figures(cut);
+        // A cut with its figures; those of the one kept go to the log where it does otherwise.
+        auto does = [&](const std::vector<int> &cut, const SurfaceFigures &after, bool exactly) {
           return exactly ? asEvent(after) : after.parts - before.parts == splits && Euler(cut) <= 0;
         };
-        if (shape == CutShape::Discs && !does(faces, true))
-          if (std::vector<int> narrower = cutAlong(axis.axis, 1); does(narrower, true))
-            faces = std::move(narrower), outcome.narrowed = true;
+        SurfaceFigures after = Figures(faces);
+        if (shape == CutShape::Discs && !asEvent(after))
+          if (std::vector<int> narrower = cutAlong(axis.axis, 1); !narrower.empty())
+            if (const SurfaceFigures figures = Figures(narrower); asEvent(figures))
+              faces = std::move(narrower), after = figures, outcome.narrowed = true;
         for (const bool exactly : {true, false}) {
-          if (shape != CutShape::Band || does(faces, exactly)) break;
+          if (shape != CutShape::Band || does(faces, after, exactly)) break;
           std::vector<int> fewest;
+          SurfaceFigures fewestFigures;
           for (const Point3 &d : BandPlanes(event, fNext)) {
             std::vector<int> other = cutAlong(d);
-            if (does(other, exactly) && (fewest.empty() || other.size() < fewest.size())) fewest = std::move(other);
+            if (other.empty() || (!fewest.empty() && other.size() >= fewest.size())) continue;
+            if (const SurfaceFigures figures = Figures(other); does(other, figures, exactly))
+              fewest = std::move(other), fewestFigures = figures;
           }
           if (!fewest.empty()) {
-            faces = std::move(fewest), outcome.axisTurned = true;
+            faces = std::move(fewest), after = fewestFigures, outcome.axisTurned = true;
             break;
           }
         }
-        // What the cut kept does, for the log where it does otherwise.
-        const SurfaceFigures after = Figures(faces);
         outcome.asEvent = asEvent(after);
         outcome.loopsAdded = after.loops - before.loops, outcome.eulerChange = after.euler - before.euler;
       }
