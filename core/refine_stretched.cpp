@@ -29,10 +29,14 @@ constexpr double kOppositeCosine = -0.5;
 // length inside. (Splitting those too: chair -> stool at 64 cells 0.90% -> 1.25% flipped.)
 constexpr double kRimSag = 0.25;
 
-// AcrossGap, with the target's point nearest the chord's midpoint already found.
-bool GapAt(const Point3 &a, const Point3 &b, const ClosestHit &atMid) {
-  return atMid.face && atMid.distance > kGapSag * vcg::Distance(a, b) &&
-         ((a + b) / 2 - atMid.point) * atMid.face->cN() > 0;
+// AcrossGap, with the target's points nearest the chord's ends and midpoint already found.
+bool GapAt(const Point3 &a, const Point3 &b, const ClosestHit &atA, const ClosestHit &atMid, const ClosestHit &atB) {
+  if (!atMid.face || ((a + b) / 2 - atMid.point) * atMid.face->cN() <= 0) return false;  // the midpoint inside
+  const double length = vcg::Distance(a, b);
+  if (atMid.distance > kGapSag * length) return true;
+  if (!atA.face || !atB.face) return false;
+  const Point3 &na = atA.face->cN(), &nb = atB.face->cN();
+  return atMid.distance > kLipSag * length && na * nb < kOppositeCosine && (b - a) * na > 0 && (a - b) * nb > 0;
 }
 
 // Whether the chord between images a and b follows the target (see the header): it crosses
@@ -42,7 +46,7 @@ bool GapAt(const Point3 &a, const Point3 &b, const ClosestHit &atMid) {
 bool FollowsTarget(const Point3 &a, const Point3 &b, const ClosestPoint &target, ClosestHit &atA, ClosestHit &atB) {
   atA = target.Query(a), atB = target.Query(b);
   const ClosestHit atMid = target.Query((a + b) / 2);
-  if (!atA.face || !atB.face || !atMid.face || GapAt(a, b, atMid)) return false;
+  if (!atA.face || !atB.face || !atMid.face || GapAt(a, b, atA, atMid, atB)) return false;
   const Point3 &na = atA.face->cN(), &nb = atB.face->cN(), &nm = atMid.face->cN();
   return nm * na > kOppositeCosine && nm * nb > kOppositeCosine &&
          (na * nb > kOppositeCosine || atMid.distance < kRimSag * vcg::Distance(a, b));
@@ -141,7 +145,7 @@ int RefineAtSeams(Mesh &cut, const Mesh &target, const ClosestPoint &index, cons
 }
 
 bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target) {
-  return GapAt(a, b, target.Query((a + b) / 2));
+  return GapAt(a, b, target.Query(a), target.Query((a + b) / 2), target.Query(b));
 }
 
 namespace {

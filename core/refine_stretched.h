@@ -41,6 +41,15 @@ constexpr double kSplitCells = 2;
 // where a slat meets the rail) at most 1 / (2 sqrt 2) = 0.354, and that chord follows the
 // target round the corner.
 constexpr double kGapSag = 0.4;
+// A chord between two lips that face each other (the target's normals at its ends opposed,
+// each pointing at the other end: a hole's two sides) crosses the gap wherever its midpoint
+// lies outside, farther than this per unit of its length. Such a chord can run obliquely,
+// from low on one lip to high on the other, and sag less than kGapSag: sphere -> cup at 96
+// cells, a fan of faces from the cup's wall across the handle's hole to the handle, its
+// chords sagging 0.27 of their length (longest mapped edge 10.6% of the target's diagonal).
+// A concave corner's two sides do not face each other (their normals are at right angles),
+// nor do a thin part's two sides (their normals point away from each other).
+constexpr double kLipSag = 0.1;
 
 int RefineStretched(Mesh &cut, const ClosestPoint &target, double limit);
 
@@ -61,7 +70,7 @@ int RefineAtSeams(Mesh &cut, const Mesh &target, const ClosestPoint &index, cons
 
 // Whether the chord between images a and b crosses a gap: its midpoint lies outside the
 // target (on the side its nearest face's normal points to), more than kGapSag of the
-// chord's length away.
+// chord's length away, or more than kLipSag where its ends lie on lips facing each other.
 bool AcrossGap(const Point3 &a, const Point3 &b, const ClosestPoint &target);
 
 // A tear: a face with an edge mapped longer than the limit across a gap (AcrossGap). Where the

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 
 using namespace eulermap;
 using namespace eulermap::testing;
@@ -71,6 +72,35 @@ TEST(RefineStretched, AChordAcrossAGapIsNotSplit) {
   for (int n = 4; n < cut.vn; ++n) EXPECT_NEAR(std::abs(image[n].Z() - 0.5), 0.5, 1e-12);
   // the tear keeps its length: c-a, 3.2 long
   EXPECT_GT(LongestImage(cut, image), 3.1);
+}
+
+// A square of the target, its corners in the order that makes its normal face `normal`.
+void AddSquare(Mesh &target, const std::array<Point3, 4> &corners, const Point3 &normal) {
+  auto v = vcg::tri::Allocator<Mesh>::AddVertices(target, 4);
+  for (int c = 0; c < 4; ++c) v[c].P() = corners[c];
+  const bool turned = ((corners[1] - corners[0]) ^ (corners[2] - corners[0])) * normal < 0;
+  vcg::tri::Allocator<Mesh>::AddFace(target, &v[0], &v[turned ? 2 : 1], &v[turned ? 1 : 2]);
+  vcg::tri::Allocator<Mesh>::AddFace(target, &v[0], &v[turned ? 3 : 2], &v[turned ? 2 : 3]);
+}
+
+TEST(RefineStretched, AnObliqueChordBetweenFacingLipsIsAGapOneRoundAConcaveCornerIsNot) {
+  // From (3, 0, 0) to (0, 0, 1): the midpoint lies 0.5 from the nearest square, 0.16 of the
+  // chord's length (under kGapSag). Between a floor facing up and a ceiling facing down (a
+  // hole's two sides: the cup's wall and its handle, sphere -> cup at 96 cells) the chord
+  // crosses the gap; between a floor and a wall at right angles (a concave corner) it
+  // follows the target round the corner.
+  const Point3 a(3, 0, 0), b(0, 0, 1);
+  Mesh slot, corner;
+  AddSquare(slot, {Point3(-5, -5, 0), Point3(5, -5, 0), Point3(5, 5, 0), Point3(-5, 5, 0)}, Point3(0, 0, 1));
+  AddSquare(slot, {Point3(-5, -5, 1), Point3(5, -5, 1), Point3(5, 5, 1), Point3(-5, 5, 1)}, Point3(0, 0, -1));
+  AddSquare(corner, {Point3(0, -5, 0), Point3(5, -5, 0), Point3(5, 5, 0), Point3(0, 5, 0)}, Point3(0, 0, 1));
+  AddSquare(corner, {Point3(0, -5, 0), Point3(0, 5, 0), Point3(0, 5, 5), Point3(0, -5, 5)}, Point3(1, 0, 0));
+  const ClosestPoint acrossSlot(slot), roundCorner(corner);
+  EXPECT_LT(acrossSlot.Query((a + b) / 2).distance, kGapSag * vcg::Distance(a, b));
+  EXPECT_TRUE(AcrossGap(a, b, acrossSlot));
+  EXPECT_TRUE(AcrossGap(b, a, acrossSlot));
+  EXPECT_FALSE(AcrossGap(a, b, roundCorner));
+  EXPECT_FALSE(AcrossGap(b, a, roundCorner));
 }
 
 TEST(RefineStretched, AnEdgeOverAConvexCornerIsSplit) {

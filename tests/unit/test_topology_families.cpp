@@ -9,7 +9,7 @@
 //   - coverage of the target >= 97%, flipped area <= 1% after untangling (and its figure
 //     before untangling is reported), longest mapped edge <= 5% of the target's diagonal.
 // Each case prints one `family |` line with its figures (the closing note's table). Every
-// pair of kPairs runs at every grid (76 cases; the README gives the suite's time), kFurtherPairs at 64, kTurnedPairs at 48 and 64,
+// pair of kPairs runs at every grid (76 cases; the README gives the suite's time), kFurtherPairs at 64 (kFurtherFinePairs at 96), kTurnedPairs at 48 and 64,
 // kTiltedPairs at 64; a chair mapped onto itself tilted, its images checked against the
 // tilt it was made with; and the coffee mug and the doughnut, placed by their handles.
 #include "core/topology.h"
@@ -44,7 +44,8 @@ const Pair kPairs[] = {
 // Shapes added later (a stool, a picture frame, a ladder, a dumbbell; then plates with holes,
 // a thin ring, a cube with a tunnel, two balls apart and overlapping, an armchair; then an
 // open cup, whose inside the morphs must reach through its mouth; then a table with an H of
-// stretchers, whose handles' bands must each do what its event does), made to
+// stretchers, whose handles' bands must each do what its event does; then a sphere onto a chair
+// with a slatted back, whose windows' rims lie on lips facing each other), made to
 // try the method on shapes its families were not fixed on, at 64 cells only (the suite's
 // time; docs/NOTES.md has them at 48 and 96). The
 // pairs among them that still fail are in docs/NOTES.md (`eulermap_bench shapes SOURCE
@@ -55,7 +56,15 @@ const Pair kFurtherPairs[] = {
     {"sphere", "thin_ring"},   {"thin_ring", "sphere"},    {"sphere", "box_tunnel"}, {"box_tunnel", "sphere"},
     {"two_balls", "snowman"},  {"snowman", "two_balls"},   {"chair", "armchair"},    {"armchair", "chair"},
     {"sphere", "cup"},         {"mug", "cup"},             {"cup", "mug"},               {"table_h", "sphere"},
+    {"sphere", "chair_slats"},
 };
+
+// Further pairs at 96 cells, where a finer grid showed what 64 did not: sphere -> cup tore
+// across the handle's hole, a fan of faces from the cup's wall to the handle whose chords sag
+// less than a gap's usually do (refine_stretched.h, kLipSag: longest mapped edge 10.6% of
+// the target's diagonal before); chair -> armchair likewise between an arm rest and the seat
+// (6.1% before).
+const Pair kFurtherFinePairs[] = {{"sphere", "cup"}, {"chair", "armchair"}};
 
 // One mesh turned a quarter about the x axis (shapes.h, `_turned`), as files made with
 // another axis up come: the morph carries a handle only where the two meshes' handles
@@ -176,6 +185,7 @@ std::string Name(const ::testing::TestParamInfo<std::tuple<Pair, int>> &info) {
 INSTANTIATE_TEST_SUITE_P(Coarse, Family, ::testing::Combine(::testing::ValuesIn(kPairs), ::testing::Values(48, 64)), Name);
 INSTANTIATE_TEST_SUITE_P(Fine, Family, ::testing::Combine(::testing::ValuesIn(kPairs), ::testing::Values(96, 128)), Name);
 INSTANTIATE_TEST_SUITE_P(Further, Family, ::testing::Combine(::testing::ValuesIn(kFurtherPairs), ::testing::Values(64)), Name);
+INSTANTIATE_TEST_SUITE_P(FurtherFine, Family, ::testing::Combine(::testing::ValuesIn(kFurtherFinePairs), ::testing::Values(96)), Name);
 INSTANTIATE_TEST_SUITE_P(Turned, Family, ::testing::Combine(::testing::ValuesIn(kTurnedPairs), ::testing::Values(48, 64)), Name);
 INSTANTIATE_TEST_SUITE_P(Tilted, Family, ::testing::Combine(::testing::ValuesIn(kTiltedPairs), ::testing::Values(64)), Name);
 
