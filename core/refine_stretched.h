@@ -45,8 +45,10 @@ constexpr double kGapSag = 0.4;
 // each pointing at the other end: a hole's two sides) crosses the gap wherever its midpoint
 // lies outside, farther than this per unit of its length. Such a chord can run obliquely,
 // from low on one lip to high on the other, and sag less than kGapSag: sphere -> cup at 96
-// cells, a fan of faces from the cup's wall across the handle's hole to the handle, its
-// chords sagging 0.27 of their length (longest mapped edge 10.6% of the target's diagonal).
+// cells, fans of faces from the cup's wall across the handle's hole to the handle, their
+// chords sagging 0.35 to 0.44 of their length, under 0.4 next to the rim, so the faces over
+// it did not reach the rim and stayed (OpenTears; longest mapped edge 10.6% of the target's
+// diagonal).
 // A concave corner's two sides do not face each other (their normals are at right angles),
 // nor do a thin part's two sides (their normals point away from each other).
 constexpr double kLipSag = 0.1;
