@@ -62,8 +62,8 @@ const Pair kFurtherPairs[] = {
 // Further pairs at 96 cells, where a finer grid showed what 64 did not: sphere -> cup tore
 // across the handle's hole, a fan of faces from the cup's wall to the handle whose chords sag
 // less than a gap's usually do (refine_stretched.h, kLipSag: longest mapped edge 10.6% of
-// the target's diagonal before); chair -> armchair likewise between an arm rest and the seat
-// (6.1% before).
+// the target's diagonal before); chair -> armchair failed its longest edge too (6.1% before
+// the same change).
 const Pair kFurtherFinePairs[] = {{"sphere", "cup"}, {"chair", "armchair"}};
 
 // One mesh turned a quarter about the x axis (shapes.h, `_turned`), as files made with
