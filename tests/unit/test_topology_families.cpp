@@ -178,14 +178,15 @@ TEST_P(Moved, TheMugAndTheDoughnutMapWithoutACut) {
   EXPECT_NE(rep.placement.find("lies on the handle the source loses"), std::string::npos) << rep.placement;
 }
 
+// A test's name: "mug_to_ring1", with the grid "sphere_to_ring2_96".
+std::string PairName(const Pair &pair) { return std::string(pair.source) + "_to_" + pair.target; }
+
 INSTANTIATE_TEST_SUITE_P(EitherWay, Moved, ::testing::Values(Pair{"mug", "ring1"}, Pair{"ring1", "mug"}),
-                         [](const ::testing::TestParamInfo<Pair> &info) {
-                           return std::string(info.param.source) + "_to_" + info.param.target;
-                         });
+                         [](const ::testing::TestParamInfo<Pair> &info) { return PairName(info.param); });
 
 std::string Name(const ::testing::TestParamInfo<std::tuple<Pair, int>> &info) {
   const auto [pair, cells] = info.param;
-  return std::string(pair.source) + "_to_" + pair.target + "_" + std::to_string(cells);
+  return PairName(pair) + "_" + std::to_string(cells);
 }
 
 INSTANTIATE_TEST_SUITE_P(Coarse, Family, ::testing::Combine(::testing::ValuesIn(kPairs), ::testing::Values(48, 64)), Name);
