@@ -1,15 +1,13 @@
 #!/usr/bin/env bash
 # Run inside a Debian root (in_root.sh ROOT --build DIR): configures the clone at /src for the
 # MeshLab installed in the root (EULERMAP_MESHLAB_SYSTEM_SOURCE: Debian's source package of
-# its version, fetched by the host into .deps/), builds the plugin's target alone (its core
-# and the shim; no tests, no benchmark) as a unity build (16 sources a batch: 1 min 48 s of
-# CPU for the trixie flavour where one source a file took 2 min 57 s) with ccache, and installs
-# it into MeshLab's plugin folder with cmake --install. Usage: build_plugin.sh MESHLAB_SOURCE_DIR_NAME (in /src/.deps)
+# its version, fetched by the host into .deps/), builds the plugin's target alone (its core,
+# a unity build as core/CMakeLists.txt makes every core, and the shim; no tests, no benchmark)
+# with ccache, and installs it into MeshLab's plugin folder with cmake --install. Usage: build_plugin.sh MESHLAB_SOURCE_DIR_NAME (in /src/.deps)
 set -euo pipefail
 tree=/src/.deps/$1
 cmake -S /src -B /build -DCMAKE_BUILD_TYPE=Release -DEULERMAP_BUILD_TESTS=OFF \
   -DEULERMAP_MESHLAB_SYSTEM_SOURCE="$tree" \
-  -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 \
   -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/build/configure.log 2>&1 || { cat /build/configure.log; exit 1; }
 grep -- '-- filter_eulermap_system:' /build/configure.log
 ccache -z >/dev/null
