@@ -3,7 +3,8 @@
 # MeshLab installed in the root (EULERMAP_MESHLAB_SYSTEM_SOURCE: Debian's source package of
 # its version, fetched by the host into .deps/), builds the plugin's target alone (its core,
 # a unity build as core/CMakeLists.txt makes every core, and the shim; no tests, no benchmark)
-# with ccache, and installs it into MeshLab's plugin folder with cmake --install. Usage: build_plugin.sh MESHLAB_SOURCE_DIR_NAME (in /src/.deps)
+# with ccache, and installs it into MeshLab's plugin folder with cmake --install.
+# Usage: build_plugin.sh MESHLAB_SOURCE_DIR_NAME (in /src/.deps)
 set -euo pipefail
 tree=/src/.deps/$1
 cmake -S /src -B /build -DCMAKE_BUILD_TYPE=Release -DEULERMAP_BUILD_TESTS=OFF \

@@ -178,7 +178,7 @@ TEST_P(Moved, TheMugAndTheDoughnutMapWithoutACut) {
   EXPECT_NE(rep.placement.find("lies on the handle the source loses"), std::string::npos) << rep.placement;
 }
 
-// A test's name: "mug_to_ring1", with the grid "sphere_to_ring2_96".
+// A pair's part of a test's name: "mug_to_ring1" (Name adds the grid: "sphere_to_ring2_96").
 std::string PairName(const Pair &pair) { return std::string(pair.source) + "_to_" + pair.target; }
 
 INSTANTIATE_TEST_SUITE_P(EitherWay, Moved, ::testing::Values(Pair{"mug", "ring1"}, Pair{"ring1", "mug"}),
